@@ -1,0 +1,82 @@
+#pragma once
+// One interface for every analytic BRDF model (the shape of pbrt-v4's BxDF interface).
+//
+// A concrete model is a small value type M with
+//   static std::string_view name(), description();  static ParamTable params();
+//   static constexpr bool kReciprocal;
+//   template <class T> static T eval(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo);
+//   static std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe);
+//   static double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi);
+// where p holds channel c's value of every parameter (ParamValues::channel). `eval` is one
+// template for doubles, SIMD-friendly loops and Ceres Jets. ModelAdapter<M> turns such a type
+// into the runtime Model the CLI, reports and Python use; fitting instantiates M::eval<Jet>.
+#include <memory>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+
+namespace brdfkit {
+
+class Model {
+ public:
+  virtual ~Model() = default;
+  virtual std::string_view name() const = 0;
+  virtual std::string_view description() const = 0;
+  virtual const ParamTable& params() const = 0;
+  virtual bool reciprocal() const = 0;
+  // ρ(wi, wo) of channel c in sr⁻¹; wi towards the light, wo towards the viewer.
+  virtual double eval(const double* p, int c, const Vec3d& wi, const Vec3d& wo) const = 0;
+  // Draws wi given wo (u uniform in [0,1)², u_lobe uniform in [0,1) picks a lobe); nullopt when
+  // the draw lands below the horizon (its probability mass is part of pdf's deficit).
+  virtual std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u,
+                                      double u_lobe) const = 0;
+  // Density of `sample` over wi (solid angle measure).
+  virtual double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi) const = 0;
+};
+
+template <class M> class ModelAdapter final : public Model {
+ public:
+  ModelAdapter() : table_(M::params()) {}
+  std::string_view name() const override { return M::name(); }
+  std::string_view description() const override { return M::description(); }
+  const ParamTable& params() const override { return table_; }
+  bool reciprocal() const override { return M::kReciprocal; }
+  double eval(const double* p, int c, const Vec3d& wi, const Vec3d& wo) const override {
+    return M::template eval<double>(p, c, wi, wo);
+  }
+  std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
+    return M::sample(p, c, wo, u, u_lobe);
+  }
+  double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi) const override { return M::pdf(p, c, wo, wi); }
+
+ private:
+  ParamTable table_;
+};
+
+// A model with parameter values: what users evaluate, sample, print and save.
+class Brdf {
+ public:
+  Brdf(const Model& model, ParamValues values) : model_(&model), values_(std::move(values)) {}
+  const Model& model() const { return *model_; }
+  const ParamValues& values() const { return values_; }
+
+  Rgb eval(const Vec3d& wi, const Vec3d& wo) const;
+  // Sampling for RGB: a channel is picked uniformly (u_lobe is reused), so the density is the
+  // mean of the channels' densities; with shared lobe shapes all three coincide.
+  std::optional<Vec3d> sample(const Vec3d& wo, const Vec2d& u, double u_lobe) const;
+  double pdf(const Vec3d& wo, const Vec3d& wi) const;
+
+ private:
+  const Model* model_;
+  ParamValues values_;
+};
+
+// Every model of the catalogue, in a stable order.
+std::span<const Model* const> all_models();
+// The model called `name`; throws InputError listing the known names otherwise.
+const Model& model_by_name(std::string_view name);
+
+}  // namespace brdfkit
