@@ -6,6 +6,7 @@ packages=(
   libeigen3-dev libceres-dev libboost-dev libboost-math-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libssl-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -3,6 +3,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/measured/sample_set.h"
@@ -20,6 +22,10 @@ class MeasuredBrdf {
   virtual std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const = 0;
   // The measurement as samples (a MERL cell, an RGL node, a Cornell line, an ALTA row).
   virtual SampleSet samples() const = 0;
+  // Directional albedo (per channel) at each incidence angle θi (radians) the data hold, computed
+  // from the samples themselves: for scattered formats whose eval() cannot be integrated (Cornell).
+  // Empty (the default) where eval() answers and albedo is integrated from it.
+  virtual std::vector<std::pair<double, Rgb>> albedos_from_samples() const { return {}; }
 };
 
 }  // namespace brdfkit

@@ -2,7 +2,14 @@
 #include <string>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/models/cook_torrance_catalogue.h"
+#include "brdfkit/models/ashikhmin_shirley.h"
+#include "brdfkit/models/blinn_phong_lobe.h"
+#include "brdfkit/models/lafortune.h"
 #include "brdfkit/models/lambert.h"
+#include "brdfkit/models/low_smooth.h"
+#include "brdfkit/models/ward.h"
+#include "brdfkit/models/ward_duer.h"
 #include "brdfkit/models/model.h"
 
 namespace brdfkit {
@@ -17,6 +24,19 @@ template <class M> const Model* instance() {
 std::span<const Model* const> all_models() {
   static const Model* const models[] = {
       instance<Lambert>(),
+      cook_torrance_ngan_model(),
+      cook_torrance_beckmann_model(),
+      cook_torrance_ggx_model(),
+      instance<Ward>(),
+      instance<WardAniso>(),
+      instance<WardDuer>(),
+      instance<BlinnPhong>(),
+      instance<Lafortune>(),
+      instance<Lafortune2>(),
+      instance<AshikhminShirley>(),
+      instance<AshikhminShirleyDielectric>(),
+      instance<LowSmooth>(),
+      instance<LowSmooth2>(),
   };
   return models;
 }

@@ -8,14 +8,68 @@
 //   smith_g1(ndf, cos_theta)              1/(1 + Λ(tanθ))
 //   smith_g_uncorrelated(ndf, ci, co)     G1(i) G1(o)           (the seeds' choice)
 //   smith_g_correlated(ndf, ci, co)       1/(1 + Λ(i) + Λ(o))   (height-correlated option)
-// PLACEHOLDER: the numeric Λ below is a stub until shadowing/ is implemented.
+//
+// How smith_lambda_numeric picks its method: a distribution template Ndf<T> for which
+// SmithShape<Ndf> is specialized (below, or in shadowing/smith_shapes.h) gets the table of
+// shadowing/smith_table.h, built lazily and thread-safely on first use over the box of
+// SmithShape<Ndf>::axes() and shared by all scalar types (double and every Jet); parameter
+// values outside that box, and distributions without a SmithShape, get the direct integral of
+// shadowing/smith_integral.h (correct, and Jet-differentiable, but ~100× slower).
+//
+// A SmithShape<Ndf> specialization provides
+//   static constexpr int kDims;                                 1 to 3 shape parameters
+//   static std::vector<SmithAxis> axes();                       box and grid, in params() order
+//   template <class T> static std::array<T, kDims> values(const Ndf<T>&);   in params() order
+// and Ndf<double>(const double* p) must accept those values (the distribution's constructor).
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "brdfkit/core/vec.h"
+#include "brdfkit/shadowing/smith_integral.h"
+#include "brdfkit/shadowing/smith_table.h"
 
 namespace brdfkit {
 
-template <class Ndf, class T> T smith_lambda_numeric(const Ndf&, const T&) { return T(0); }
+// Primary template: no table (kDims = 0).
+template <template <class> class Ndf> struct SmithShape {
+  static constexpr int kDims = 0;
+};
+
+// The lazily built table of a distribution family (one per template, whatever the scalar type).
+// C++ function-local statics initialise exactly once, and other threads wait for it.
+template <template <class> class Ndf> const SmithLambdaTable& smith_lambda_table() {
+  using Shape = SmithShape<Ndf>;
+  static const SmithLambdaTable table(Shape::axes(), [](const double* p, double t) {
+    const Ndf<double> ndf(p);
+    return smith_lambda_integral(ndf, t);
+  });
+  return table;
+}
+
+// Λ of a distribution that has no SmithShape (or is not a one-parameter template): direct integral.
+template <class Ndf, class T> T smith_lambda_numeric(const Ndf& ndf, const T& tan_theta) {
+  return smith_lambda_integral(ndf, tan_theta);
+}
+
+template <template <class> class Ndf, class T, class U>
+  requires(SmithShape<Ndf>::kDims > 0)
+U smith_lambda_numeric(const Ndf<T>& ndf, const U& tan_theta) {
+  using Shape = SmithShape<Ndf>;
+  const std::array<T, Shape::kDims> p = Shape::values(ndf);
+  double ps[Shape::kDims];
+  for (int k = 0; k < Shape::kDims; ++k) ps[k] = smith_detail::scalar(p[k]);
+  const SmithLambdaTable& table = smith_lambda_table<Ndf>();
+  if (!table.covers(ps)) return smith_lambda_integral(ndf, tan_theta);
+  if constexpr (std::is_same_v<T, U>) {
+    return table.lambda(p.data(), tan_theta);
+  } else {
+    // Jet tanθ with double parameters (or the reverse) interpolates in the Jet type.
+    std::array<U, Shape::kDims> pu;
+    for (int k = 0; k < Shape::kDims; ++k) pu[k] = U(p[k]);
+    return table.lambda(pu.data(), tan_theta);
+  }
+}
 
 template <class Ndf, class T> T smith_tan_theta(const T& cos_theta) {
   using std::sqrt;
@@ -31,6 +85,7 @@ template <class Ndf, class T> T smith_g_uncorrelated(const Ndf& ndf, const T& co
   return smith_g1(ndf, cos_i) * smith_g1(ndf, cos_o);
 }
 
+// Height-correlated form 1/(1 + Λ(i) + Λ(o)) (Heitz 2014 Eq. 99, cited by seed 004 §3; DESIGN.md §4).
 template <class Ndf, class T> T smith_g_correlated(const Ndf& ndf, const T& cos_i, const T& cos_o) {
   if (!(cos_i > T(0) && cos_o > T(0))) return T(0);
   return T(1) / (T(1) + ndf.Lambda(smith_tan_theta<Ndf>(cos_i)) + ndf.Lambda(smith_tan_theta<Ndf>(cos_o)));

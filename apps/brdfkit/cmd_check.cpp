@@ -1,0 +1,193 @@
+// `brdfkit check MODEL [--param name=value ...] [--json]`: the numerical checks of a model at
+// given parameter values: normalization of its microfacet distribution (DESIGN.md §3),
+// reciprocity, albedo at θi = 0…80° (DESIGN.md §2), and a χ² test of its importance sampling
+// with the integral of its pdf (analysis/chi2_test.h).
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "brdfkit/analysis/chi2_test.h"
+#include "brdfkit/analysis/model_checks.h"
+#include "brdfkit/core/error.h"
+#include "brdfkit/models/microfacet_model.h"
+#include "brdfkit/models/model.h"
+#include "command.h"
+
+namespace brdfkit::cli {
+namespace {
+
+constexpr int kChecksFailed = 3;  // exit code when a check fails (2 stays "bad input")
+
+double parse_number(const std::string& text, const std::string& where) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v)) throw InputError(where, "'" + text + "' is not a finite number");
+  return v;
+}
+
+// name=value (all channels), name[r|g|b]=value or name[0|1|2]=value, name=r,g,b.
+void apply_param(const ParamTable& table, ParamValues& values, const std::string& arg) {
+  const std::string where = "--param '" + arg + "'";
+  const size_t eq = arg.find('=');
+  if (eq == std::string::npos || eq == 0) throw InputError(where, "expected name=value, name[r|g|b]=value or name=r,g,b");
+  std::string name = arg.substr(0, eq);
+  const std::string value = arg.substr(eq + 1);
+  int channel = -1;
+  if (name.back() == ']') {
+    const size_t open = name.find('[');
+    const std::string ch = open == std::string::npos ? "" : name.substr(open + 1, name.size() - open - 2);
+    if (ch == "r" || ch == "0") channel = 0;
+    else if (ch == "g" || ch == "1") channel = 1;
+    else if (ch == "b" || ch == "2") channel = 2;
+    else throw InputError(where, "channel must be one of r, g, b (or 0, 1, 2)");
+    name = name.substr(0, open);
+  }
+  if (value.find(',') != std::string::npos) {
+    if (channel >= 0) throw InputError(where, "give one value with a channel index, or three without");
+    std::vector<std::string> parts;
+    std::stringstream ss(value);
+    for (std::string part; std::getline(ss, part, ',');) parts.push_back(part);
+    if (parts.size() != 3 || value.back() == ',') throw InputError(where, "expected three comma-separated values r,g,b");
+    for (int c = 0; c < 3; ++c) values.set(table, name, parse_number(parts[size_t(c)], where), c);
+    return;
+  }
+  values.set(table, name, parse_number(value, where), channel);
+}
+
+struct CheckOptions {
+  std::string model;
+  std::vector<std::string> params;
+  std::vector<double> theta_o_deg{0, 45, 85};
+  int channel = 0;
+  long samples = 200000;
+  std::uint64_t seed = 5489;
+  bool json = false;
+};
+
+int run_check(const CheckOptions& o) {
+  const Model& model = model_by_name(o.model);
+  const ParamTable& table = model.params();
+  ParamValues values = ParamValues::defaults(table);
+  for (const auto& a : o.params) apply_param(table, values, a);
+  if (o.samples < 1000) throw InputError("--samples", "must be at least 1000");
+  for (double t : o.theta_o_deg)
+    if (!(t >= 0 && t < 90)) throw InputError("--theta-o", fmt::format("{:g} is not in [0, 90) degrees", t));
+
+  nlohmann::json out;
+  out["model"] = model.name();
+  nlohmann::json pj = nlohmann::json::object();
+  for (size_t i = 0; i < table.size(); ++i)
+    pj[table[i].name] = {values.values[0][i], values.values[1][i], values.values[2][i]};
+  out["params"] = pj;
+  bool passed = true;
+
+  // Normalization of the distribution (shape parameters are shared: channel 0 stands for all).
+  if (const auto* view = dynamic_cast<const MicrofacetDistributionView*>(&model)) {
+    const double norm = ndf_normalization([&](double c) { return view->ndf(values.channel(0), c); });
+    out["normalization"] = norm;
+    if (!(std::abs(norm - 1) < 1e-3)) passed = false;
+  } else {
+    out["normalization"] = nullptr;
+  }
+
+  double worst = 0;
+  int pairs = 0;
+  for (int c = 0; c < 3; ++c) {
+    const ReciprocityCheck r = reciprocity_check(model, values.channel(c), c);
+    worst = std::max(worst, r.max_relative_error);
+    pairs += r.pairs;
+  }
+  out["reciprocity"] = {{"max_relative_error", worst}, {"pairs", pairs}, {"reciprocal", model.reciprocal()}};
+  if (model.reciprocal() && !(worst < 1e-8)) passed = false;
+
+  nlohmann::json alb = nlohmann::json::array();
+  for (double t : albedo_angles_deg()) {
+    nlohmann::json rgb = nlohmann::json::array();
+    for (int c = 0; c < 3; ++c) rgb.push_back(albedo(model, values.channel(c), c, t * kPi / 180));
+    alb.push_back({{"theta_i_deg", t}, {"rgb", rgb}});
+  }
+  out["albedo"] = alb;
+
+  nlohmann::json chi = nlohmann::json::array();
+  Chi2Options co;
+  co.samples = o.samples;
+  co.seed = o.seed;
+  co.test_count = int(o.theta_o_deg.size());
+  for (double t : o.theta_o_deg) {
+    const Vec3d wo = spherical_direction(t * kPi / 180, 0.0);
+    const Chi2Result r = chi2_test(model, values.channel(o.channel), o.channel, wo, co);
+    chi.push_back({{"theta_o_deg", t},
+                   {"channel", o.channel},
+                   {"statistic", r.statistic},
+                   {"dof", r.dof},
+                   {"p_value", r.p_value},
+                   {"pdf_integral", r.pdf_integral},
+                   {"rejected_fraction", r.rejected_fraction},
+                   {"integral_z", r.integral_z},
+                   {"passed", r.passed},
+                   {"message", r.message}});
+    if (!r.passed) passed = false;
+  }
+  out["chi2"] = chi;
+  out["passed"] = passed;
+
+  if (o.json) {
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << fmt::format("{}  ({} samples per chi2 test, seed {})\n", model.name(), o.samples, o.seed);
+    for (size_t i = 0; i < table.size(); ++i)
+      std::cout << fmt::format("  {:<8} {:g} {:g} {:g}\n", table[i].name, values.values[0][i], values.values[1][i],
+                               values.values[2][i]);
+    if (out["normalization"].is_null())
+      std::cout << "normalization  (no microfacet distribution)\n";
+    else
+      std::cout << fmt::format("normalization  int D cos dw = {:.8f}\n", out["normalization"].get<double>());
+    std::cout << fmt::format("reciprocity    max relative error {:.3g} over {} pairs{}\n", worst, pairs,
+                             model.reciprocal() ? "" : " (model not reciprocal)");
+    std::cout << "albedo         theta_i      R          G          B\n";
+    for (const auto& a : alb)
+      std::cout << fmt::format("               {:5.0f}   {:9.6f}  {:9.6f}  {:9.6f}\n", a["theta_i_deg"].get<double>(),
+                               a["rgb"][0].get<double>(), a["rgb"][1].get<double>(), a["rgb"][2].get<double>());
+    std::cout << "sampling       theta_o   chi2      dof   p-value    int pdf    rejected  result\n";
+    for (const auto& r : chi)
+      std::cout << fmt::format("               {:5.0f}   {:9.2f} {:5d}   {:8.4f}   {:.6f}   {:.6f}  {}{}\n",
+                               r["theta_o_deg"].get<double>(), r["statistic"].get<double>(), r["dof"].get<int>(),
+                               r["p_value"].get<double>(), r["pdf_integral"].get<double>(),
+                               r["rejected_fraction"].get<double>(), r["passed"].get<bool>() ? "pass" : "FAIL ",
+                               r["message"].get<std::string>());
+    std::cout << (passed ? "all checks passed\n" : "some checks FAILED\n");
+  }
+  return passed ? 0 : kChecksFailed;
+}
+
+const CommandRegistration reg("check", [](CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "check",
+      "Check a model: distribution normalization, reciprocity, albedo at theta_i = 0..80 deg, chi-square test of "
+      "its importance sampling and the integral of its pdf. Exit 0 when every check passes, 3 when one fails, 2 on "
+      "bad input");
+  auto o = std::make_shared<CheckOptions>();
+  sub->add_option("model", o->model, "Model name (see `brdfkit models`)")->required();
+  sub->add_option("--param", o->params,
+                  "name=value (all channels), name[r|g|b]=value (one channel) or name=r,g,b; repeatable");
+  sub->add_option("--theta-o", o->theta_o_deg, "Viewing angles in degrees for the chi-square test")
+      ->capture_default_str();
+  sub->add_option("--channel", o->channel, "Channel (0, 1, 2) whose sampling is tested")
+      ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  sub->add_option("--samples", o->samples, "Samples per chi-square test")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed of the sample generator")->capture_default_str();
+  sub->add_flag("--json", o->json, "Print JSON instead of a table");
+  return [o]() { return run_check(*o); };
+});
+
+}  // namespace
+}  // namespace brdfkit::cli

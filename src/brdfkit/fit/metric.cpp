@@ -1,0 +1,148 @@
+#include "brdfkit/fit/metric.h"
+
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <cmath>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/fit/metric_definition.h"
+#include "brdfkit/fit/model_batch.h"
+
+namespace brdfkit::fit {
+
+namespace {
+
+constexpr std::string_view kIds[] = {"ngan", "bagher", "low-e1", "low-e2", "hp-rmse"};
+
+MetricDefinition definition(std::string_view id, int coarsen) {
+  if (id == "ngan") return ngan_metric(coarsen);
+  if (id == "bagher") return bagher_metric(coarsen);
+  if (id == "low-e1") return low_metric(1, coarsen);
+  if (id == "low-e2") return low_metric(2, coarsen);
+  if (id == "hp-rmse") return hp_rmse_metric(coarsen);
+  std::string known;
+  for (auto k : kIds) known += (known.empty() ? "" : ", ") + std::string(k);
+  throw InputError("metric '" + std::string(id) + "'", "unknown; known metrics: " + known);
+}
+
+}  // namespace
+
+std::span<const std::string_view> metric_ids() { return kIds; }
+
+Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
+  if (opt.coarsen < 1) throw InputError("metric '" + std::string(id) + "'", "coarsening factor must be >= 1");
+  const MetricDefinition def = definition(id, opt.coarsen);
+  Metric m;
+  m.id_ = std::string(id);
+  m.grid_ = def.grid;
+  m.transform_ = def.transform;
+  m.sqrt_ = def.sqrt;
+  m.data_ = &data;
+  double scale2 = def.channel_pool;
+  if (def.cache) {
+    m.chunks_.resize(m.grid_.theta_i.size());
+    tbb::parallel_for(size_t(0), m.chunks_.size(), [&](size_t i) { m.chunks_[i] = build_chunk(m.grid_, i, data); });
+    if (m.sample_count() == 0)
+      throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
+  }
+  if (def.divide_by_weight_sum) {
+    double wsum = 0;  // in chunk order: deterministic
+    for (const MetricChunk& ch : m.chunks_)
+      for (double s : ch.sqrt_weight) wsum += s * s;
+    scale2 /= wsum;
+  }
+  if (def.divide_by_max_albedo) {
+    m.albedo_norm_ = max_measured_albedo(data, opt.coarsen);
+    if (!(m.albedo_norm_ > 0) || !std::isfinite(m.albedo_norm_))
+      throw MetricUndefined(data.path(), "maximum measured albedo is not positive; metric '" + m.id_ +
+                                        "' is normalized by it and undefined");
+  }
+  m.scale_ = std::sqrt(scale2) / (def.sqrt ? m.albedo_norm_ : 1.0);
+  return m;
+}
+
+const MetricChunk& Metric::chunk(size_t i, MetricChunk& scratch) const {
+  if (!chunks_.empty()) return chunks_[i];
+  scratch = build_chunk(grid_, i, *data_);
+  return scratch;
+}
+
+size_t Metric::sample_count() const {
+  size_t n = 0;
+  for (const MetricChunk& ch : chunks_) n += ch.size();
+  return n;
+}
+
+double Metric::finish(double sum_sq) const { return sqrt_ ? std::sqrt(sum_sq) : sum_sq; }
+
+double Metric::value(const Model& model, const ParamValues& values) const {
+  std::vector<double> partial(chunk_count(), 0.0);
+  std::vector<unsigned char> bad(chunk_count(), 0);
+  std::vector<size_t> count(chunk_count(), 0);
+  const BatchEvalFn fast = batch_eval_for(model);
+  tbb::parallel_for(size_t(0), chunk_count(), [&](size_t i) {
+    MetricChunk scratch;
+    const MetricChunk& ch = chunk(i, scratch);
+    count[i] = ch.size();
+    double sum = 0;
+    std::vector<double> rho(ch.size());
+    const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
+    for (int c = 0; c < 3; ++c) {
+      eval_pairs(model, fast, values.channel(c), c, ch.size(), d, rho.data());
+      const auto& meas = ch.measured[size_t(c)];
+      for (size_t k = 0; k < ch.size(); ++k) {
+        const double f = ch.factor[k];
+        const double r =
+            ch.sqrt_weight[k] * (apply_transform(transform_, f * rho[k]) - apply_transform(transform_, f * meas[k]));
+        sum += r * r;
+      }
+    }
+    partial[i] = sum;
+    bad[i] = !std::isfinite(sum);
+  });
+  double total = 0;
+  for (size_t i = 0; i < partial.size(); ++i) {
+    if (bad[i])
+      throw InputError("parameters of model '" + std::string(model.name()) + "'",
+                       "the model evaluates to a non-finite value in the domain of metric '" + id_ + "'");
+    total += partial[i];
+  }
+  size_t samples = 0;
+  for (size_t n : count) samples += n;
+  if (samples == 0) throw MetricUndefined(data_->path(), "no measured value in the domain of metric '" + id_ + "'");
+  return finish(scale_ * scale_ * total);
+}
+
+double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
+  const double deg = kPi / 180.0;
+  const auto given = data.albedos_from_samples();
+  if (!given.empty()) {
+    double best = 0;
+    for (const auto& [theta, a] : given)
+      if (theta <= 80 * deg + 1e-9) best = std::max(best, a.maxCoeff());
+    return best;
+  }
+  const int n_i = 80 / coarsen;
+  const auto ti = cell_centres(0.0, n_i * coarsen * deg, n_i);
+  const auto to = cell_centres(0.0, kPi / 2, 90 / coarsen);
+  const auto ph = cell_centres(0.0, kPi, 180 / coarsen, 2.0);  // Δφ ∈ [π, 2π) mirrors [0, π)
+  std::vector<double> best(ti.size(), 0.0);
+  tbb::parallel_for(size_t(0), ti.size(), [&](size_t i) {
+    const Vec3d wi(std::sin(ti[i].angle), 0.0, std::cos(ti[i].angle));
+    Rgb a = Rgb::Zero();
+    for (const AxisNode& o : to) {
+      const double st = std::sin(o.angle), ct = std::cos(o.angle);
+      for (const AxisNode& p : ph) {
+        const auto m = data.eval(wi, Vec3d(st * std::cos(p.angle), st * std::sin(p.angle), ct));
+        if (m && m->allFinite()) a += *m * (ct * st * o.weight * p.weight);  // ρ cosθo dωo
+      }
+    }
+    best[i] = a.maxCoeff();
+  });
+  double out = 0;
+  for (double b : best) out = std::max(out, b);
+  return out;
+}
+
+}  // namespace brdfkit::fit

@@ -1,0 +1,43 @@
+#pragma once
+// Fitting a model under a metric (DESIGN.md §8 `ngan` procedure, seed 002 §3): the lobe-shape
+// parameters by bounded nonlinear least squares (Ceres, bounds from the ParamTable, numeric
+// derivatives), the colours — the per-channel parameters flagged `linear` — solved inside every
+// evaluation by bound-constrained linear least squares (variable projection), one lobe shape
+// shared by R, G, B. Under a metric whose residual is not linear in ρ (low-e2's logarithm) the
+// colours become ordinary solver parameters (seed 003 §5.1 fits every parameter of E2 at once).
+// Seeded multi-start: start 0 from the table's defaults, the others uniform in the bounds
+// (log-uniform where the bounds span more than two decades).
+#include <cstdint>
+#include <string>
+
+#include "brdfkit/fit/metric.h"
+#include "brdfkit/models/model.h"
+
+namespace brdfkit::fit {
+
+struct FitOptions {
+  int starts = 1;
+  std::uint64_t seed = 1;
+  int max_iterations = 100;  // per start
+};
+
+struct FitResult {
+  ParamValues values;
+  double metric_value = 0;  // the fitting metric at `values` (Metric::value)
+  int iterations = 0;       // solver iterations, all starts
+  int best_start = 0;
+  double seconds = 0;       // wall time of the fit (domain construction excluded)
+  bool converged = false;   // the best start's solver reported convergence
+  std::string message;      // the best start's solver report, one line
+};
+
+// Throws InputError when the model has no parameter to fit or the options are invalid, and
+// FitError when no start produced a finite result.
+FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& options);
+
+class FitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace brdfkit::fit

@@ -1,0 +1,140 @@
+#include "brdfkit/measured/cornell.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/measured/spectral_rgb.h"
+
+namespace brdfkit {
+
+namespace {
+
+// Numbers of one line; InputError naming the line for anything else.
+std::vector<double> parse_numbers(const std::string& line, const std::string& where) {
+  std::vector<double> v;
+  std::istringstream ss(line);
+  std::string tok;
+  while (ss >> tok) {
+    size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(tok, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != tok.size() || !std::isfinite(x)) throw InputError(where, fmt::format("not a number: '{}'", tok));
+    v.push_back(x);
+  }
+  return v;
+}
+
+// Ring index k of 1 − cos θs = (k/10)² (DESIGN.md §2), nearest ring.
+int ring_of(double theta_s) { return int(std::lround(10 * std::sqrt(std::max(0.0, 1 - std::cos(theta_s))))); }
+
+}  // namespace
+
+CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesystem::path& cie_dir) : path_(file.string()) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(path_, "cannot open file");
+  std::string line;
+  int line_no = 0;
+  size_t n_wl = 0;
+  std::vector<std::array<double, 4>> angles;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // CRLF files
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const std::string where = fmt::format("{}:{}", path_, line_no);
+    const std::vector<double> v = parse_numbers(line, where);
+    if (n_wl == 0) {  // header: the wavelength count
+      if (v.size() != 1 || v[0] < 1 || v[0] > 10000 || v[0] != std::floor(v[0]))
+        throw InputError(where, "expected the wavelength count (one positive integer)");
+      n_wl = size_t(v[0]);
+      continue;
+    }
+    if (wavelengths_.size() < n_wl) {  // header: the wavelengths, over one or more lines
+      wavelengths_.insert(wavelengths_.end(), v.begin(), v.end());
+      if (wavelengths_.size() > n_wl)
+        throw InputError(where, fmt::format("more wavelengths than the {} announced", n_wl));
+      continue;
+    }
+    if (v.size() != 4 + n_wl)
+      throw InputError(where, fmt::format("sample line has {} values, expected {} (θi φi θs φs and {} spectral values)", v.size(),
+                                          4 + n_wl, n_wl));
+    if (v[0] < 0 || v[0] >= kPi / 2 || v[2] < 0 || v[2] >= kPi / 2)
+      throw InputError(where, fmt::format("angles out of range: θi = {}, θs = {} (radians, in [0, π/2))", v[0], v[2]));
+    angles.push_back({v[0], v[1], v[2], v[3]});
+    spectra_.emplace_back(v.begin() + 4, v.end());
+  }
+  if (n_wl == 0) throw InputError(path_, "no wavelength count found (empty file?)");
+  if (wavelengths_.size() < n_wl) throw InputError(path_, fmt::format("only {} of the {} wavelengths", wavelengths_.size(), n_wl));
+  for (size_t j = 1; j < n_wl; ++j)
+    if (!(wavelengths_[j] > wavelengths_[j - 1])) throw InputError(path_, "wavelengths must increase");
+  if (spectra_.empty()) throw InputError(path_, "no samples");
+
+  std::unique_ptr<SpectrumToRgb> own;
+  if (!cie_dir.empty()) own = std::make_unique<SpectrumToRgb>(cie_dir);
+  const SpectrumToRgb& conv = own ? *own : spectrum_to_rgb_for(file);
+  const Eigen::MatrixXd m = conv.matrix(wavelengths_);
+
+  // Solid-angle weights (see the header): samples per (θi, ring), then band area / count.
+  std::map<std::pair<long, int>, int> per_ring;
+  auto key = [](const std::array<double, 4>& a) { return std::pair{std::lround(a[0] * 1e5), ring_of(a[2])}; };
+  for (const auto& a : angles) ++per_ring[key(a)];
+  auto band_edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
+
+  samples_.reserve(angles.size());
+  for (size_t k = 0; k < angles.size(); ++k) {
+    const auto& a = angles[k];
+    const int ring = std::min(ring_of(a[2]), 9);
+    const double weight = 2 * kPi * (band_edge(ring + 1) - band_edge(ring)) / per_ring[key(a)];
+    const Eigen::Vector3d rgb = m * Eigen::Map<const Eigen::VectorXd>(spectra_[k].data(), Eigen::Index(n_wl));
+    samples_.push_back(spherical_direction(a[0], a[1]), spherical_direction(a[2], a[3]), rgb.array(), weight, true);
+  }
+}
+
+std::string CornellBrdf::dimensions() const {
+  return fmt::format("{} scattered samples, {} wavelengths {}-{} nm, {} incidence angles", samples_.size(), wavelengths_.size(),
+                     wavelengths_.front(), wavelengths_.back(), theta_i_values().size());
+}
+
+SampleSet CornellBrdf::samples() const { return samples_; }
+
+std::vector<double> CornellBrdf::theta_i_values() const {
+  std::vector<double> t;
+  for (size_t k = 0; k < samples_.size(); ++k) t.push_back(theta_of(samples_.wi(k)));
+  std::sort(t.begin(), t.end());
+  std::vector<double> out;
+  for (double x : t)
+    if (out.empty() || x - out.back() > 1e-5) out.push_back(x);
+  return out;
+}
+
+Rgb CornellBrdf::directional_albedo_from_samples(double theta_i) const {
+  Rgb a = Rgb::Zero();
+  bool any = false;
+  for (size_t k = 0; k < samples_.size(); ++k) {
+    if (std::abs(theta_of(samples_.wi(k)) - theta_i) > 1e-5) continue;
+    a += samples_.value(k) * samples_.wo_z[k] * samples_.weight[k];
+    any = true;
+  }
+  if (!any) throw InputError(path_, fmt::format("no samples at θi = {} rad", theta_i));
+  return a;
+}
+
+std::vector<std::pair<double, Rgb>> CornellBrdf::albedos_from_samples() const {
+  std::vector<std::pair<double, Rgb>> out;
+  for (double t : theta_i_values()) out.emplace_back(t, directional_albedo_from_samples(t));
+  return out;
+}
+
+std::unique_ptr<MeasuredBrdf> read_cornell(const std::filesystem::path& file) { return std::make_unique<CornellBrdf>(file); }
+
+}  // namespace brdfkit

@@ -1,0 +1,252 @@
+#include "brdfkit/measured/merl.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fmt/format.h>
+#include <numeric>
+
+#include "brdfkit/core/atomic_file.h"
+#include "brdfkit/core/error.h"
+
+namespace brdfkit::merl {
+
+static_assert(std::endian::native == std::endian::little, "MERL files are little-endian; add byte swapping");
+
+// MERL BRDFRead.cpp theta_half_index: sqrt((θh/(π/2)·90)·90), i.e. 90·√(θh/(π/2)) (DESIGN.md §2)
+// computed in the reference's order, so values at a cell edge land in the same cell as there.
+int theta_h_index(double theta_h) {
+  if (!(theta_h > 0.0)) return 0;
+  const double deg = theta_h / (kPi / 2.0) * kResThetaH;
+  const double t = std::sqrt(deg * kResThetaH);
+  if (!(t < kResThetaH)) return kResThetaH - 1;  // also catches +Inf
+  return int(t);
+}
+
+// BRDFRead.cpp theta_diff_index: floor(θd/(π·0.5)·90), clamped.
+int theta_d_index(double theta_d) {
+  const double t = theta_d / (kPi * 0.5) * kResThetaD;
+  if (!(t > 0.0)) return 0;
+  if (!(t < kResThetaD - 1)) return kResThetaD - 1;
+  return int(t);
+}
+
+// BRDFRead.cpp phi_diff_index: φd < 0 → φd + π (reciprocity), floor(φd/π·360/2), clamped. The
+// reference's /2 after ×360 is exact, so ×180 gives the same double.
+int phi_d_index(double phi_d) {
+  if (phi_d < 0.0) phi_d += kPi;
+  const double t = phi_d / kPi * kResPhiD;
+  if (!(t > 0.0)) return 0;
+  if (!(t < kResPhiD - 1)) return kResPhiD - 1;
+  return int(t);
+}
+
+Cell cell_of(double theta_h, double theta_d, double phi_d) {
+  return {theta_h_index(theta_h), theta_d_index(theta_d), phi_d_index(phi_d)};
+}
+
+Cell cell_of(const Vec3d& wi, const Vec3d& wo) {
+  const HalfDiff hd = to_half_diff(wi, wo);
+  return cell_of(hd.theta_h, hd.theta_d, hd.phi_d);
+}
+
+HalfDiff cell_centre(const Cell& c) {
+  const double u = (c.theta_h + 0.5) / kResThetaH;
+  HalfDiff hd;
+  hd.theta_h = u * u * (kPi / 2);
+  hd.phi_h = 0;
+  hd.theta_d = (c.theta_d + 0.5) / kResThetaD * (kPi / 2);
+  hd.phi_d = (c.phi_d + 0.5) / kResPhiD * kPi;
+  return hd;
+}
+
+bool cell_directions(const Cell& c, Vec3d& wi, Vec3d& wo) {
+  from_half_diff(cell_centre(c), wi, wo);
+  return wi.z() > 0 && wo.z() > 0;
+}
+
+Vec3d index_coordinates(double theta_h, double theta_d, double phi_d) {
+  if (phi_d < 0) phi_d += kPi;
+  return {kResThetaH * std::sqrt(std::max(theta_h, 0.0) / (kPi / 2)) - 0.5, theta_d / (kPi / 2) * kResThetaD - 0.5,
+          phi_d / kPi * kResPhiD - 0.5};
+}
+
+// ---------------------------------------------------------------------------------------------
+
+Table::Table()
+    : raw_(std::make_unique_for_overwrite<double[]>(3 * kCellCount)),
+      valid_(std::make_unique<std::uint8_t[]>(kCellCount)) {
+  std::fill_n(raw_.get(), 3 * kCellCount, -1.0);
+}
+
+Table::Table(std::unique_ptr<double[]> raw)
+    : raw_(std::move(raw)), valid_(std::make_unique_for_overwrite<std::uint8_t[]>(kCellCount)) {
+  const double *r = raw_.get(), *g = r + kCellCount, *b = g + kCellCount;
+  std::uint8_t* v = valid_.get();
+  for (size_t k = 0; k < kCellCount; ++k) v[k] = (r[k] >= 0) & (g[k] >= 0) & (b[k] >= 0);
+}
+
+Table::Table(const Table& other)
+    : raw_(std::make_unique_for_overwrite<double[]>(3 * kCellCount)),
+      valid_(std::make_unique_for_overwrite<std::uint8_t[]>(kCellCount)) {
+  std::copy_n(other.raw_.get(), 3 * kCellCount, raw_.get());
+  std::copy_n(other.valid_.get(), kCellCount, valid_.get());
+}
+
+Table& Table::operator=(Table other) noexcept {
+  std::swap(raw_, other.raw_);
+  std::swap(valid_, other.valid_);
+  return *this;
+}
+
+void Table::set_raw(size_t offset, double r, double g, double b) {
+  raw_[offset] = r;
+  raw_[kCellCount + offset] = g;
+  raw_[2 * kCellCount + offset] = b;
+  valid_[offset] = (r >= 0) & (g >= 0) & (b >= 0);
+}
+
+size_t Table::valid_count() const {
+  return size_t(std::count(valid_.get(), valid_.get() + kCellCount, std::uint8_t(1)));
+}
+
+std::optional<Rgb> Table::lookup(double theta_h, double theta_d, double phi_d) const {
+  const size_t k = cell_offset(cell_of(theta_h, theta_d, phi_d));
+  if (!valid(k)) return std::nullopt;
+  return value(k);
+}
+
+std::optional<Rgb> Table::lookup(const Vec3d& wi, const Vec3d& wo) const {
+  if (!(wi.z() > 0 && wo.z() > 0)) return std::nullopt;
+  const HalfDiff hd = to_half_diff(wi, wo);
+  return lookup(hd.theta_h, hd.theta_d, hd.phi_d);
+}
+
+std::optional<Rgb> Table::lookup_trilinear(double theta_h, double theta_d, double phi_d) const {
+  const Vec3d x = index_coordinates(theta_h, theta_d, phi_d);
+  // θh, θd: clamp to the first/last centre (no data beyond them). φd: periodic with period 180.
+  const double xh = std::clamp(x[0], 0.0, double(kResThetaH - 1));
+  const double xd = std::clamp(x[1], 0.0, double(kResThetaD - 1));
+  const int h0 = std::min(int(xh), kResThetaH - 2), d0 = std::min(int(xd), kResThetaD - 2);
+  const double th = xh - h0, td = xd - d0;
+  const double p0f = std::floor(x[2]);
+  const double tp = x[2] - p0f;
+  const int p0 = ((int(p0f) % kResPhiD) + kResPhiD) % kResPhiD, p1 = (p0 + 1) % kResPhiD;
+  Rgb sum = Rgb::Zero();
+  double wsum = 0;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      for (int c = 0; c < 2; ++c) {
+        const double w = (a ? th : 1 - th) * (b ? td : 1 - td) * (c ? tp : 1 - tp);
+        if (w == 0) continue;
+        const size_t k = cell_offset({h0 + a, d0 + b, c ? p1 : p0});
+        if (!valid(k)) continue;
+        sum += w * value(k);
+        wsum += w;
+      }
+  if (wsum == 0) return std::nullopt;
+  return sum / wsum;
+}
+
+std::optional<Rgb> Table::lookup_trilinear(const Vec3d& wi, const Vec3d& wo) const {
+  if (!(wi.z() > 0 && wo.z() > 0)) return std::nullopt;
+  const HalfDiff hd = to_half_diff(wi, wo);
+  return lookup_trilinear(hd.theta_h, hd.theta_d, hd.phi_d);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+// Closes the descriptor on every path out of read().
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// Reads exactly n bytes (read(2) may return less); returns how many were read.
+size_t read_fully(int fd, void* dst, size_t n) {
+  auto* p = static_cast<char*>(dst);
+  size_t done = 0;
+  while (done < n) {
+    const ssize_t got = ::read(fd, p + done, n - done);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;
+    done += size_t(got);
+  }
+  return done;
+}
+
+const char* const kChannelName[3] = {"R", "G", "B"};
+
+}  // namespace
+
+Table read(const std::filesystem::path& file) {
+  const std::string where = file.string();
+  Fd f{::open(file.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (f.fd < 0) {
+    const int e = errno;
+    if (e == ENOENT) throw InputError(where, "no such file");
+    throw InputError(where, fmt::format("cannot open: {}", std::strerror(e)));
+  }
+  struct stat st {};
+  if (::fstat(f.fd, &st) != 0) throw InputError(where, fmt::format("cannot stat: {}", std::strerror(errno)));
+  if (S_ISDIR(st.st_mode)) throw InputError(where, "is a directory, not a MERL file");
+  if (!S_ISREG(st.st_mode)) throw InputError(where, "not a regular file");
+  const auto size = std::uintmax_t(st.st_size);
+  if (size < kHeaderBytes)
+    throw InputError(where, fmt::format("truncated: {} bytes, shorter than the 12-byte MERL header", size));
+
+  std::int32_t dims[3];
+  if (read_fully(f.fd, dims, sizeof dims) != sizeof dims)
+    throw InputError(where, fmt::format("read error in the header: {}", std::strerror(errno)));
+  if (dims[0] != kResThetaH || dims[1] != kResThetaD || dims[2] != kResPhiD)
+    throw InputError(where, fmt::format("header dimensions ({}, {}, {}), expected (90, 90, 180) for (θh, θd, φd)",
+                                        dims[0], dims[1], dims[2]));
+  if (size < kFileBytes)
+    throw InputError(where, fmt::format("truncated: {} bytes, a 90 x 90 x 180 MERL file has {}", size, kFileBytes));
+  if (size > kFileBytes)
+    throw InputError(where, fmt::format("{} trailing bytes after the 3 x 1458000 values ({} bytes, expected {})",
+                                        size - kFileBytes, size, kFileBytes));
+
+  // One read straight into the table's storage: no intermediate buffer, no per-value copy.
+  auto raw = std::make_unique_for_overwrite<double[]>(3 * kCellCount);
+  const size_t want = 3 * kCellCount * sizeof(double);
+  const size_t got = read_fully(f.fd, raw.get(), want);
+  if (got != want)
+    throw InputError(where, fmt::format("truncated: read {} of {} value bytes", got, want));
+
+  // Non-finite values are corruption, not "not measured": refuse the file, naming the first one.
+  const double* v = raw.get();
+  bool all_finite = true;
+  for (size_t k = 0; k < 3 * kCellCount; ++k) all_finite &= std::isfinite(v[k]);
+  if (!all_finite) {
+    const size_t k = size_t(std::find_if(v, v + 3 * kCellCount, [](double x) { return !std::isfinite(x); }) - v);
+    const Cell c = cell_at(k % kCellCount);
+    throw InputError(where, fmt::format("value {} ({} channel, cell θh {} θd {} φd {}) is {}", k,
+                                        kChannelName[k / kCellCount], c.theta_h, c.theta_d, c.phi_d,
+                                        std::isnan(v[k]) ? "NaN" : (v[k] > 0 ? "+Inf" : "-Inf")));
+  }
+  Table table(std::move(raw));
+  if (table.valid_count() == 0)
+    throw InputError(where, "no measured cell: every cell has a negative (not measured) value");
+  return table;
+}
+
+void write(const std::filesystem::path& file, const Table& table) {
+  write_file_atomically(file, [&](std::ostream& out) {
+    const std::int32_t dims[3] = {kResThetaH, kResThetaD, kResPhiD};
+    out.write(reinterpret_cast<const char*>(dims), sizeof dims);
+    out.write(reinterpret_cast<const char*>(table.raw_data()), std::streamsize(3 * kCellCount * sizeof(double)));
+  });
+}
+
+}  // namespace brdfkit::merl

@@ -1,0 +1,319 @@
+#include "brdfkit/measured/rgl_tensor.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <span>
+
+#include <fmt/format.h>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/measured/spectral_rgb.h"
+
+namespace brdfkit {
+
+namespace {
+
+// Mitsuba's Struct::Type codes as written in tensor_file headers.
+enum class TensorType : std::uint8_t { Invalid = 0, UInt8, Int8, UInt16, Int16, UInt32, Int32, UInt64, Int64, Float16, Float32, Float64 };
+
+size_t type_size(std::uint8_t t) {
+  switch (TensorType(t)) {
+    case TensorType::UInt8: case TensorType::Int8: return 1;
+    case TensorType::UInt16: case TensorType::Int16: case TensorType::Float16: return 2;
+    case TensorType::UInt32: case TensorType::Int32: case TensorType::Float32: return 4;
+    case TensorType::UInt64: case TensorType::Int64: case TensorType::Float64: return 8;
+    default: return 0;
+  }
+}
+
+struct Field {
+  std::uint8_t type = 0;
+  std::uint64_t offset = 0;
+  std::vector<std::uint64_t> shape;
+  size_t count() const {
+    size_t n = 1;
+    for (auto s : shape) n *= size_t(s);
+    return n;
+  }
+};
+
+// Little-endian reader over the whole file with bounds checks (truncation → InputError).
+class Reader {
+ public:
+  Reader(const std::vector<std::uint8_t>& bytes, const std::string& where) : b_(bytes), where_(where) {}
+  template <class T> T get() {
+    need(sizeof(T));
+    T v = 0;
+    for (size_t k = 0; k < sizeof(T); ++k) v = T(v | (T(b_[pos_ + k]) << (8 * k)));
+    pos_ += sizeof(T);
+    return v;
+  }
+  std::string bytes(size_t n) {
+    need(n);
+    std::string s(reinterpret_cast<const char*>(b_.data() + pos_), n);
+    pos_ += n;
+    return s;
+  }
+
+ private:
+  void need(size_t n) const {
+    if (pos_ + n > b_.size())
+      throw InputError(where_, fmt::format("truncated header: needs {} bytes at offset {}, file has {}", n, pos_, b_.size()));
+  }
+  const std::vector<std::uint8_t>& b_;
+  std::string where_;
+  size_t pos_ = 0;
+};
+
+std::vector<float> floats(const std::vector<std::uint8_t>& bytes, const Field& f) {
+  std::vector<float> v(f.count());
+  // The format is little-endian like every machine brdfkit builds for; copy bytes as they are.
+  static_assert(std::endian::native == std::endian::little, "tensor_file reader assumes a little-endian host");
+  std::memcpy(v.data(), bytes.data() + f.offset, v.size() * sizeof(float));
+  return v;
+}
+
+std::string shape_string(const std::vector<std::uint64_t>& s) {
+  return fmt::format("[{}]", fmt::join(s, ","));
+}
+
+// Mitsuba 3 `measured` / Dupuy & Jakob 2018 §5: θ ↦ u = sqrt(2θ/π) (finer near the normal), φ ↦ (φ+π)/2π.
+double theta2u(double theta) { return std::sqrt(theta * (2 / kPi)); }
+double phi2u(double phi) { return (phi + kPi) * (0.5 / kPi); }
+double u2theta(double u) { return u * u * (kPi / 2); }
+double u2phi(double u) { return (2 * u - 1) * kPi; }
+// Polar angle, accurate near the normal (acos(z) loses half the digits there).
+double elevation(const Vec3d& d) {
+  const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + (d.z() - 1) * (d.z() - 1));
+  return 2 * std::asin(std::min(1.0, 0.5 * dist));
+}
+
+}  // namespace
+
+RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(path_, "cannot open file");
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Reader r(bytes, path_);
+  const std::string magic = r.bytes(12);
+  if (std::memcmp(magic.data(), "tensor_file\0", 12) != 0)
+    throw InputError(path_, "not an RGL tensor_file (bad magic; expected \"tensor_file\\0\")");
+  const int major = r.get<std::uint8_t>(), minor = r.get<std::uint8_t>();
+  if (major != 1 || minor != 0) throw InputError(path_, fmt::format("unsupported tensor_file version {}.{} (expected 1.0)", major, minor));
+  const std::uint32_t n_fields = r.get<std::uint32_t>();
+  if (n_fields > 1000) throw InputError(path_, fmt::format("implausible field count {}", n_fields));
+  std::map<std::string, Field> fields;
+  for (std::uint32_t k = 0; k < n_fields; ++k) {
+    const std::string name = r.bytes(r.get<std::uint16_t>());
+    Field f;
+    const std::uint16_t ndim = r.get<std::uint16_t>();
+    f.type = r.get<std::uint8_t>();
+    f.offset = r.get<std::uint64_t>();
+    for (std::uint16_t d = 0; d < ndim; ++d) f.shape.push_back(r.get<std::uint64_t>());
+    const size_t ts = type_size(f.type);
+    if (ts == 0) throw InputError(path_, fmt::format("field '{}': unknown type code {}", name, f.type));
+    for (auto s : f.shape)
+      if (s > (1u << 24)) throw InputError(path_, fmt::format("field '{}': implausible dimension {}", name, s));
+    if (f.offset > bytes.size() || f.count() * ts > bytes.size() - f.offset)
+      throw InputError(path_, fmt::format("field '{}': data ({} bytes at offset {}) extend past the end of the file ({} bytes): truncated?",
+                                          name, f.count() * ts, f.offset, bytes.size()));
+    fields[name] = std::move(f);
+  }
+
+  auto field = [&](const std::string& name, TensorType type, size_t ndim) -> const Field& {
+    auto it = fields.find(name);
+    if (it == fields.end()) throw InputError(path_, fmt::format("missing field '{}'", name));
+    if (it->second.type != std::uint8_t(type) || it->second.shape.size() != ndim)
+      throw InputError(path_, fmt::format("field '{}': expected {} dimension(s) of type code {}, found shape {} type {}", name, ndim,
+                                          int(type), shape_string(it->second.shape), it->second.type));
+    return it->second;
+  };
+  const Field& theta_f = field("theta_i", TensorType::Float32, 1);
+  const Field& phi_f = field("phi_i", TensorType::Float32, 1);
+  const Field& sigma_f = field("sigma", TensorType::Float32, 2);
+  const Field& ndf_f = field("ndf", TensorType::Float32, 2);
+  const Field& vndf_f = field("vndf", TensorType::Float32, 4);
+  const Field& lum_f = field("luminance", TensorType::Float32, 4);
+  const Field& jac_f = field("jacobian", TensorType::UInt8, 1);
+  if (auto it = fields.find("description"); it != fields.end() && it->second.type == std::uint8_t(TensorType::UInt8))
+    description_ = std::string(reinterpret_cast<const char*>(bytes.data() + it->second.offset), it->second.count());
+
+  theta_i_ = floats(bytes, theta_f);
+  const std::vector<float> phi_i = floats(bytes, phi_f);
+  const size_t nt = theta_i_.size();
+  if (phi_i.size() != 1)
+    throw InputError(path_, fmt::format("field 'phi_i' has {} entries: only isotropic files (one phi_i) are supported", phi_i.size()));
+  if (nt < 2) throw InputError(path_, "field 'theta_i' needs at least 2 entries");
+  for (size_t k = 1; k < nt; ++k)
+    if (!(theta_i_[k] > theta_i_[k - 1])) throw InputError(path_, "field 'theta_i' must increase");
+  if (jac_f.count() != 1) throw InputError(path_, "field 'jacobian' must hold one value");
+  jacobian_ = bytes[jac_f.offset] != 0;
+
+  const auto& vs = vndf_f.shape;
+  const auto& ls = lum_f.shape;
+  if (vs[0] != 1 || vs[1] != nt || vs[2] < 2 || vs[3] < 2)
+    throw InputError(path_, fmt::format("field 'vndf' has shape {}, expected [1,{},ny,nx]", shape_string(vs), nt));
+  if (ls[0] != 1 || ls[1] != nt || ls[2] != ls[3] || ls[2] < 2)
+    throw InputError(path_, fmt::format("field 'luminance' has shape {}, expected [1,{},n,n]", shape_string(ls), nt));
+  for (const Field* f : {&sigma_f, &ndf_f})
+    if (f->shape[0] < 2 || f->shape[1] < 2) throw InputError(path_, fmt::format("fields 'sigma'/'ndf' need at least 2 x 2 entries, found {}", shape_string(f->shape)));
+  grid_ = int(ls[2]);
+  const size_t cells = size_t(grid_) * size_t(grid_);
+
+  // Colour table: `rgb`, or `spectra` + `wavelengths` converted node by node (spectral_rgb.h).
+  std::array<std::vector<float>, 3> rgb;
+  for (auto& c : rgb) c.resize(nt * cells);
+  if (fields.count("rgb")) {
+    const Field& f = field("rgb", TensorType::Float32, 5);
+    if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != 3 || f.shape[3] != ls[2] || f.shape[4] != ls[3])
+      throw InputError(path_, fmt::format("field 'rgb' has shape {}, expected [1,{},3,{},{}]", shape_string(f.shape), nt, grid_, grid_));
+    const std::vector<float> v = floats(bytes, f);
+    for (size_t t = 0; t < nt; ++t)
+      for (size_t c = 0; c < 3; ++c)
+        for (size_t i = 0; i < cells; ++i) {
+          const float x = v[(t * 3 + c) * cells + i];
+          rgb[c][t * cells + i] = x;
+          negative_values_ += x < 0;
+        }
+  } else if (fields.count("spectra")) {
+    spectral_ = true;
+    const Field& f = field("spectra", TensorType::Float32, 5);
+    const Field& wf = field("wavelengths", TensorType::Float32, 1);
+    const std::vector<float> wl_f = floats(bytes, wf);
+    const size_t nl = wl_f.size();
+    if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != ls[2] || f.shape[4] != ls[3])
+      throw InputError(path_, fmt::format("field 'spectra' has shape {}, expected [1,{},{},{},{}]", shape_string(f.shape), nt, nl, grid_, grid_));
+    const std::vector<double> wl(wl_f.begin(), wl_f.end());
+    const Eigen::MatrixXd m = spectrum_to_rgb_for(file).matrix(wl);
+    const std::vector<float> v = floats(bytes, f);
+    Eigen::VectorXd s{Eigen::Index(nl)};
+    for (size_t t = 0; t < nt; ++t)
+      for (size_t i = 0; i < cells; ++i) {
+        for (size_t l = 0; l < nl; ++l) {
+          s[Eigen::Index(l)] = v[(t * nl + l) * cells + i];
+          negative_values_ += s[Eigen::Index(l)] < 0;
+        }
+        const Eigen::Vector3d c = m * s;
+        for (size_t k = 0; k < 3; ++k) rgb[k][t * cells + i] = float(c[Eigen::Index(k)]);
+      }
+  } else {
+    throw InputError(path_, "missing field 'rgb' (or 'spectra' + 'wavelengths')");
+  }
+
+  const std::vector<std::vector<float>> params = {phi_i, theta_i_};
+  ndf_ = MarginalWarp2D(floats(bytes, ndf_f).data(), int(ndf_f.shape[1]), int(ndf_f.shape[0]), {}, false);
+  sigma_ = MarginalWarp2D(floats(bytes, sigma_f).data(), int(sigma_f.shape[1]), int(sigma_f.shape[0]), {}, false);
+  vndf_ = MarginalWarp2D(floats(bytes, vndf_f).data(), int(vs[3]), int(vs[2]), params, true);
+  luminance_raw_ = floats(bytes, lum_f);
+  for (size_t c = 0; c < 3; ++c) rgb_[c] = MarginalWarp2D(rgb[c].data(), grid_, grid_, params, false);
+  rgb_raw_ = std::move(rgb);
+  for (const auto& table : {floats(bytes, ndf_f), floats(bytes, sigma_f), floats(bytes, vndf_f)})
+    for (float x : table)
+      if (!std::isfinite(x)) throw InputError(path_, "non-finite value in the ndf/sigma/vndf tables");
+}
+
+std::string RglBrdf::dimensions() const {
+  return fmt::format("{} theta_i x {}x{} {} grid (jacobian {}){}", theta_i_.size(), grid_, grid_, spectral_ ? "spectral->rgb" : "rgb",
+                     jacobian_ ? 1 : 0, description_.empty() ? "" : ", \"" + description_ + "\"");
+}
+
+std::optional<Rgb> RglBrdf::eval(const Vec3d& wi, const Vec3d& wo) const { return eval_conditioned(wi, wo, true); }
+
+std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other) const {
+  if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
+  const Vec3d m = (wc + wx).normalized();
+  const double theta_c = elevation(wc), phi_c = std::atan2(wc.y(), wc.x());
+  const double theta_m = elevation(m), phi_m = std::atan2(m.y(), m.x());
+  // Isotropic: the half vector's azimuth is taken relative to ωc's (Dupuy & Jakob 2018 §6).
+  const Vec2d u_c(theta2u(theta_c), phi2u(phi_c));
+  Vec2d u_m(theta2u(theta_m), phi2u(phi_m - phi_c));
+  u_m.y() -= std::floor(u_m.y());
+  const double params[2] = {phi_c, theta_c};
+  const Vec2d sample = vndf_.invert(u_m, params).first;
+  Rgb v;
+  for (int c = 0; c < 3; ++c) v[c] = rgb_[size_t(c)].eval(sample, params);
+  const double cos_theta = cosine_of_other ? wx.z() : wc.z();
+  // DESIGN.md §2: ρ = RGB · D(h) / (4 σ(ωc) cos θx); with jacobian = 0 the table holds ρ·cos θx.
+  if (jacobian_) v *= ndf_.eval(u_m) / (4 * sigma_.eval(u_c) * cos_theta);
+  else v /= cos_theta;
+  return v;
+}
+
+Rgb RglBrdf::rgb_node(size_t t, int y, int x) const {
+  const size_t i = t * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x);
+  return Rgb(rgb_raw_[0][i], rgb_raw_[1][i], rgb_raw_[2][i]);
+}
+
+double RglBrdf::luminance_node(size_t t, int y, int x) const {
+  return luminance_raw_[t * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x)];
+}
+
+
+std::optional<std::pair<Vec3d, Vec3d>> RglBrdf::node_directions(size_t t, int y, int x) const {
+  const Vec3d wc = spherical_direction(double(theta_i_[t]), 0.0);
+  const double params[2] = {0.0, theta_i_[t]};
+  const Vec2d u_m = vndf_.sample(Vec2d(double(x) / (grid_ - 1), double(y) / (grid_ - 1)), params).first;
+  const Vec3d m = spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()));
+  const Vec3d wx = reflect(wc, m);
+  if (!(wx.z() > 0)) return std::nullopt;
+  return std::pair{wc, wx.normalized()};
+}
+
+SampleSet RglBrdf::samples() const {
+  SampleSet s;
+  const double du = 1.0 / (grid_ - 1);
+  for (size_t t = 0; t < theta_i_.size(); ++t) {
+    // A θi node on the horizon has no incident light: skip it.
+    if (std::cos(double(theta_i_[t])) < 1e-6) continue;
+    const Vec3d wc = spherical_direction(double(theta_i_[t]), 0.0);
+    const double params[2] = {0.0, theta_i_[t]};
+    for (int y = 0; y < grid_; ++y)
+      for (int x = 0; x < grid_; ++x) {
+        const auto [u_m, pdf] = vndf_.sample(Vec2d(x * du, y * du), params);
+        const double theta_m = u2theta(u_m.x());
+        const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()));
+        const Vec3d wx = reflect(wc, m).normalized();
+        if (!(wx.z() > 0)) continue;
+        // Dupuy & Jakob 2018 §5 (Mitsuba 3 `measured`): dωm = 2π² u_m,x sin θm du_m and
+        // dωx = 4 (ωc·m) dωm. Trapezoid weight of the node in the unit square, times |dωx/du| = jacobian / pdf.
+        const double trap = (x == 0 || x == grid_ - 1 ? 0.5 : 1.0) * (y == 0 || y == grid_ - 1 ? 0.5 : 1.0) * du * du;
+        const double jac = 2 * kPi * kPi * u_m.x() * std::sin(theta_m) * 4 * wc.dot(m);
+        const double weight = pdf > 0 ? trap * jac / pdf : 0.0;
+        Rgb v = rgb_node(t, y, x);
+        if (jacobian_) v *= ndf_.eval(u_m) / (4 * sigma_.eval(Vec2d(theta2u(theta_i_[t]), phi2u(0.0))) * wx.z());
+        else v /= wx.z();
+        s.push_back(wc, wx, v, weight, true);
+      }
+  }
+  return s;
+}
+
+Rgb RglBrdf::albedo(const Vec3d& wi, int n) const {
+  Rgb sum = Rgb::Zero();
+  if (!(wi.z() > 0) || n < 1) return sum;
+  const double theta_c = elevation(wi), phi_c = std::atan2(wi.y(), wi.x());
+  const double params[2] = {phi_c, theta_c};
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const auto [u_m, pdf] = vndf_.sample(Vec2d((i + 0.5) / n, (j + 0.5) / n), params);
+      if (!(pdf > 0)) continue;
+      const double theta_m = u2theta(u_m.x());
+      const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()) + phi_c);
+      const Vec3d wo = reflect(wi, m).normalized();
+      if (!(wo.z() > 0)) continue;
+      const auto rho = eval(wi, wo);
+      if (!rho) continue;
+      // |dωo/du_m| as in samples(); dividing by the warp's pdf makes this a quadrature in u.
+      const double jac = 2 * kPi * kPi * u_m.x() * std::sin(theta_m) * 4 * wi.dot(m);
+      sum += *rho * wo.z() * jac / pdf;
+    }
+  return sum / (double(n) * n);
+}
+
+std::unique_ptr<MeasuredBrdf> read_rgl(const std::filesystem::path& file) { return std::make_unique<RglBrdf>(file); }
+
+}  // namespace brdfkit

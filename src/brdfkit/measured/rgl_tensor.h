@@ -1,0 +1,72 @@
+#pragma once
+// RGL `tensor_file` BRDFs (EPFL material database, Dupuy & Jakob 2018): reader and evaluation.
+// Byte layout: data/README.md; evaluation: DESIGN.md §2 and Dupuy & Jakob 2018 §5–6, the scheme of
+// Mitsuba 3's `measured` plugin and pbrt-v4's MeasuredBxDF (with pbrt-v4 PR #215's cosine fix).
+//
+// Roles of the two directions: the tables are conditioned on one direction ωc (their theta_i/phi_i
+// axes). brdfkit's eval(wi, wo) takes ωc = wi, the illumination direction (DESIGN.md §7), and
+// ωx = wo. The data are not exactly reciprocal, so eval(wi, wo) ≠ eval(wo, wi) in general.
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brdfkit/measured/marginal_warp_2d.h"
+#include "brdfkit/measured/measured_brdf.h"
+
+namespace brdfkit {
+
+class RglBrdf final : public MeasuredBrdf {
+ public:
+  // Reads and validates the file; throws InputError naming the file and the field at fault.
+  explicit RglBrdf(const std::filesystem::path& file);
+
+  std::string format() const override { return "rgl"; }
+  std::string path() const override { return path_; }
+  std::string dimensions() const override;
+  // ρ(wi, wo) in sr⁻¹ with ωc = wi; raw table values (may be < 0 where the file holds noise).
+  std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const override;
+  // The table nodes: for each theta_i node and each node of the rgb grid, the direction pair the
+  // VNDF warp maps it to (nodes whose wo falls below the horizon are skipped), its raw value, and
+  // weight = solid angle of wo the node stands for within its θi slice (trapezoid rule in the
+  // warped unit square times |dωo/du|), so Σ weight·ρ·cosθo over a slice ≈ that slice's albedo.
+  SampleSet samples() const override;
+
+  // ρ with the table conditioned on `wc` and the other direction `wx`. With `cosine_of_other`
+  // false the cosine is taken on ωc (pbrt-v4 before PR #215): only for tests that show it wrong.
+  std::optional<Rgb> eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other = true) const;
+  // Directional albedo a(wi) = ∫ ρ(wi, wo) cosθo dωo by an n×n midpoint rule in the unit square of
+  // the VNDF warp (so the points follow the lobe), per channel.
+  Rgb albedo(const Vec3d& wi, int n = 64) const;
+
+  std::string description() const { return description_; }
+  size_t negative_values() const { return negative_values_; }  // rgb/spectra entries < 0 (noise)
+  bool spectral() const { return spectral_; }                  // converted from `spectra`
+  bool jacobian() const { return jacobian_; }
+  const std::vector<float>& theta_i() const { return theta_i_; }
+  int grid_size() const { return grid_; }  // rgb grid is grid × grid per theta_i node
+  // Raw table node values at theta_i node t, grid row y, column x (rgb after spectral conversion;
+  // the file's `luminance` table).
+  Rgb rgb_node(size_t t, int y, int x) const;
+  double luminance_node(size_t t, int y, int x) const;
+  // The direction pair of a node (nullopt where wo is below the horizon), as samples() uses.
+  std::optional<std::pair<Vec3d, Vec3d>> node_directions(size_t t, int y, int x) const;
+
+ private:
+  std::string path_, description_;
+  bool spectral_ = false, jacobian_ = true;
+  size_t negative_values_ = 0;
+  int grid_ = 0;
+  std::vector<float> theta_i_;
+  MarginalWarp2D ndf_, sigma_, vndf_;
+  std::array<MarginalWarp2D, 3> rgb_;           // one interpolant per channel (bilinear, no CDF)
+  std::array<std::vector<float>, 3> rgb_raw_;   // [theta_i][y][x] per channel
+  std::vector<float> luminance_raw_;            // [theta_i][y][x]
+};
+
+// Reads an RGL tensor_file BRDF (see RglBrdf); for measured/load.cpp.
+std::unique_ptr<MeasuredBrdf> read_rgl(const std::filesystem::path& file);
+
+}  // namespace brdfkit

@@ -1,0 +1,154 @@
+#pragma once
+// Cook-Torrance microfacet reflection over a Lambertian base (seed 004 Eq. 1, DESIGN.md §6):
+//   ρ(wi, wo) = kd/π + ks F(θd) D(θh) G(wi, wo) / (4 cosθi cosθo),
+// with any distribution of ndf/ (the interface of ndf/beckmann.h), any Fresnel term of fresnel/
+// (`explicit X(const T* p)`, `params()`, `eval(cos θd)`) and a selectable masking term.
+// Seed 000 Eq. 1 writes the same lobe as ρs/π · F D G/(cosθi cosθo): ks = 4 ρs/π (see
+// ks_from_bagher_rho_s below); its ρd equals kd.
+//
+// Parameters, in this order: kd (per channel, linear), ks (per channel, linear), then
+// Ndf::params(), then Fresnel::params(). One evaluation template (`eval_at`) serves doubles,
+// the structure-of-arrays batch loop (`eval_batch`) and ceres::Jet.
+#include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/core/warp.h"
+#include "brdfkit/measured/sample_set.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+enum class Masking {
+  SmithUncorrelated,  // G1(i) G1(o), the seeds' choice (seed 000 Eq. 6, seed 004 Eq. 4–7)
+  SmithCorrelated,    // 1/(1 + Λ(i) + Λ(o)), height-correlated (DESIGN.md §4)
+  VGroove,            // Cook & Torrance 1982 (DESIGN.md §4)
+};
+
+// Seed 000 Eq. 1 (ρs/π · FDG/(cosθi cosθo)) and seed 004 Eq. 1 (ks FDG/(4 cosθi cosθo)) are
+// equal when ks/4 = ρs/π.
+inline double ks_from_bagher_rho_s(double rho_s) { return 4.0 * rho_s * kInvPi; }
+inline double bagher_rho_s_from_ks(double ks) { return ks * kPi / 4.0; }
+
+template <template <class> class Ndf, template <class> class Fresnel, Masking kMasking = Masking::SmithUncorrelated>
+struct CookTorrance {
+  static constexpr bool kReciprocal = true;
+  static constexpr Masking kMaskingTerm = kMasking;
+  template <class T> using Distribution = Ndf<T>;
+  template <class T> using FresnelTerm = Fresnel<T>;
+
+  static ParamTable params() {
+    ParamTable t = {
+        {"kd", 0.0, 1.0, 0.2, Scope::PerChannel, true, "diffuse albedo of the Lambertian term kd/pi (DESIGN.md §6)"},
+        {"ks", 0.0, 100.0, 0.5, Scope::PerChannel, true,
+         "specular scale in ks F D G/(4 cos_i cos_o) (seed 004 Eq. 1; = 4 rho_s/pi of seed 000 Eq. 1)"}};
+    for (auto& s : Ndf<double>::params()) t.push_back(s);
+    for (auto& s : Fresnel<double>::params()) t.push_back(s);
+    return t;
+  }
+  // Where the distribution's and the Fresnel term's parameters start in p.
+  static constexpr int kNdfOffset = 2;
+  static int fresnel_offset() {
+    static const int offset = kNdfOffset + int(Ndf<double>::params().size());
+    return offset;
+  }
+
+  // The masking term for unit directions above the horizon; ch = cosθh, cd = cosθd = wi·h.
+  template <class T> static T masking(const Ndf<T>& ndf, const T& ci, const T& co, const T& ch, const T& cd) {
+    if constexpr (kMasking == Masking::SmithUncorrelated) {
+      return smith_g_uncorrelated(ndf, ci, co);
+    } else if constexpr (kMasking == Masking::SmithCorrelated) {
+      return smith_g_correlated(ndf, ci, co);
+    } else {
+      // min(1, 2 cosθh cosθo/(wo·h), 2 cosθh cosθi/(wo·h)) (DESIGN.md §4); wo·h = wi·h.
+      const T g = T(2) * ch / cd;
+      const T gm = ci < co ? g * ci : g * co;
+      return gm < T(1) ? gm : T(1);
+    }
+  }
+
+  // ρ at one direction pair from prepared terms (kd_pi = kd/π). Both directions must be unit.
+  template <class T>
+  static T eval_at(const T& kd_pi, const T& ks, const Ndf<T>& ndf, const Fresnel<T>& fresnel, const T& wix,
+                   const T& wiy, const T& wiz, const T& wox, const T& woy, const T& woz) {
+    using std::sqrt;
+    if (!(wiz > T(0) && woz > T(0))) return T(0);
+    const T hx = wix + wox, hy = wiy + woy, hz = wiz + woz;
+    const T len = sqrt(hx * hx + hy * hy + hz * hz);
+    const T ch = hz / len;
+    // |wi + wo| = 2 cos θd for unit directions: symmetric in wi and wo, so ρ(wi, wo) = ρ(wo, wi)
+    // to the last bit, and one square root serves θh and θd.
+    const T cd = T(0.5) * len;
+    const T spec = fresnel.eval(cd) * ndf.D(ch) * masking(ndf, wiz, woz, ch, cd) / (T(4) * wiz * woz);  // seed 004 Eq. 1
+    return kd_pi + ks * spec;
+  }
+
+  template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
+    const Ndf<T> ndf(p + kNdfOffset);
+    const Fresnel<T> fresnel(p + fresnel_offset());
+    return eval_at(T(p[0] * T(kInvPi)), p[1], ndf, fresnel, wi.x(), wi.y(), wi.z(), wo.x(), wo.y(), wo.z());
+  }
+
+  // ρ of one channel at n direction pairs given as structure-of-arrays; out[k] for pair k.
+  static void eval_batch(const double* p, int, std::size_t n, const double* wix, const double* wiy,
+                         const double* wiz, const double* wox, const double* woy, const double* woz,
+                         double* __restrict out) {
+    const Ndf<double> ndf(p + kNdfOffset);
+    const Fresnel<double> fresnel(p + fresnel_offset());
+    const double kd_pi = p[0] * kInvPi, ks = p[1];
+    for (std::size_t k = 0; k < n; ++k)
+      out[k] = eval_at(kd_pi, ks, ndf, fresnel, wix[k], wiy[k], wiz[k], wox[k], woy[k], woz[k]);
+  }
+  static void eval_batch(const double* p, int c, const SampleSet& s, double* out) {
+    eval_batch(p, c, s.size(), s.wi_x.data(), s.wi_y.data(), s.wi_z.data(), s.wo_x.data(), s.wo_y.data(),
+               s.wo_z.data(), out);
+  }
+
+  // Probability of sampling the specular lobe: proportional to an albedo estimate of each lobe
+  // (seed 004 §5.5's lobe selection; seed 000 §4.5): kd for the diffuse term, ks F(cosθo) for
+  // the specular one (a normalized D with G ≈ 1 reflects ks F). Both are clamped at 0 (a
+  // Bagher Fresnel term can be negative); with no estimate at all, the lobes share evenly.
+  static double specular_probability(const double* p, const Vec3d& wo) {
+    const double d = std::max(0.0, p[0]);
+    const double s = std::max(0.0, p[1] * Fresnel<double>(p + fresnel_offset()).eval(wo.z()));
+    if (!(d + s > 0) || !std::isfinite(d + s)) return 0.5;
+    return s / (d + s);
+  }
+
+  // Diffuse: cosine hemisphere. Specular: m from the distribution (density D cosθm), wi = the
+  // mirror of wo about m; draws with wo·m ≤ 0 or wi below the horizon are rejected.
+  static std::optional<Vec3d> sample(const double* p, int, const Vec3d& wo, const Vec2d& u, double u_lobe) {
+    if (!(wo.z() > 0)) return std::nullopt;
+    if (!(u_lobe < specular_probability(p, wo))) {
+      const Vec3d wi = square_to_cosine_hemisphere(u);
+      if (!(wi.z() > 0)) return std::nullopt;
+      return wi;
+    }
+    const Vec3d m = Ndf<double>(p + kNdfOffset).sample(u);
+    if (!(wo.dot(m) > 0)) return std::nullopt;
+    const Vec3d wi = reflect(wo, m);
+    if (!(wi.z() > 0)) return std::nullopt;
+    return wi;
+  }
+
+  // Mixture density (DESIGN.md §6): p_d cosθi/π + p_s D(h) cosθh / (4 |wo·h|).
+  static double pdf(const double* p, int, const Vec3d& wo, const Vec3d& wi) {
+    if (!(wo.z() > 0 && wi.z() > 0)) return 0.0;
+    const double ps = specular_probability(p, wo);
+    double v = (1.0 - ps) * wi.z() * kInvPi;
+    if (ps > 0) {
+      const Vec3d sum = wi + wo;
+      const double len = sum.norm();
+      if (len > 0) {
+        const Vec3d h = sum / len;
+        const double oh = wo.dot(h);
+        if (oh > 0) v += ps * Ndf<double>(p + kNdfOffset).pdf(h) / (4.0 * oh);
+      }
+    }
+    return v;
+  }
+};
+
+}  // namespace brdfkit

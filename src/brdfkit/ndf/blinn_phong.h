@@ -1,0 +1,54 @@
+#pragma once
+// Blinn-Phong distribution: D = (N+2)/(2π) cosᴺθ (seed 001 Table 1, DESIGN.md §3).
+// Interface: see beckmann.h.
+#include <cmath>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+template <class T> struct BlinnPhong {
+  T N;  // exponent (sharpness)
+
+  static ParamTable params() {
+    return {{"N", 0.0, 1e6, 50.0, Scope::Shared, false, "Blinn-Phong exponent (seed 001 Table 1)"}};
+  }
+  explicit BlinnPhong(const T* p) : N(p[0]) {}
+
+  // P22 = D cos⁴θ with cos²θ = 1/(1+x): (N+2)/(2π) (1+x)^{−(N+4)/2}.
+  T P22(const T& x) const {
+    using std::pow;
+    return (N + T(2)) / T(2 * kPi) * pow(T(1) + x, -(N + T(4)) / T(2));
+  }
+  T D(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    return (N + T(2)) / T(2 * kPi) * unit(cos_theta);
+  }
+  T unit(const T& cos_theta) const {
+    using std::pow;
+    if (!(cos_theta > T(0))) return T(0);
+    return pow(cos_theta, N);
+  }
+  // No closed form Λ for cosᴺ (seed 001 names none).
+  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
+
+  // pdf of c = cosθ is (N+2) c^{N+1}, CDF c^{N+2}: c = u^{1/(N+2)}.
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>
+  {
+    const double c = u.x() > 0.0 ? std::exp(std::log(u.x()) / (N + 2.0)) : 0.0;
+    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+    const double phi = 2 * kPi * u.y();
+    return Vec3d(s * std::cos(phi), s * std::sin(phi), c);
+  }
+  double pdf(const Vec3d& m) const
+    requires std::is_same_v<T, double>
+  {
+    return D(m.z()) * std::max(0.0, m.z());
+  }
+};
+
+}  // namespace brdfkit

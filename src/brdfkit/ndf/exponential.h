@@ -1,0 +1,55 @@
+#pragma once
+// Exponential distribution: P22(x) = exp(−sqrt(x/α²)) / (2π α²), x = tan²θ
+// (seed 000 Table 1, DESIGN.md §3). Interface: see beckmann.h.
+#include <boost/math/special_functions/gamma.hpp>
+#include <cmath>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+template <class T> struct Exponential {
+  T alpha;
+
+  static ParamTable params() {
+    return {{"alpha", 1e-3, 2.0, 0.2, Scope::Shared, false, "exponential distribution width (seed 000 Table 1)"}};
+  }
+  explicit Exponential(const T* p) : alpha(p[0]) {}
+
+  T P22(const T& x) const {
+    using std::exp;
+    using std::sqrt;
+    if (!(x > T(0))) return T(1) / (T(2 * kPi) * alpha * alpha);  // sqrt's Jet derivative is 0/0 at 0
+    return exp(-sqrt(x) / alpha) / (T(2 * kPi) * alpha * alpha);
+  }
+  T D(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    const T c2 = cos_theta * cos_theta;
+    return P22((T(1) - c2) / c2) / (c2 * c2);
+  }
+  T unit(const T& cos_theta) const { return D(cos_theta) / D(T(1)); }
+  // No closed form Λ in the seeds.
+  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
+
+  // With s = tanθ/α the slope CDF is 1 − (1+s)e⁻ˢ, the Gamma(2) CDF: s = P⁻¹(2, u).
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>
+  {
+    // Q⁻¹(2, 1−u) keeps the tail accurate as u → 1; u = 1 would be s = ∞ (θ = π/2).
+    const double q = 1.0 - u.x();
+    const double s = q > 0.0 ? boost::math::gamma_q_inv(2.0, q) : 1e300;
+    const double theta = std::atan(alpha * s);
+    const double phi = 2 * kPi * u.y();
+    return Vec3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+  }
+  double pdf(const Vec3d& m) const
+    requires std::is_same_v<T, double>
+  {
+    return D(m.z()) * std::max(0.0, m.z());
+  }
+};
+
+}  // namespace brdfkit

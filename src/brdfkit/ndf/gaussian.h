@@ -1,0 +1,71 @@
+#pragma once
+// Gaussian (Torrance-Sparrow) distribution: D = k(m) exp(−θ²/m²) (seed 001 Table 1, DESIGN.md §3),
+// normalized numerically: k = 1/(2π I(m)), I(m) = ∫₀^{π/2} e^{−θ²/m²} cosθ sinθ dθ by
+// Gauss-Kronrod. Seed 001 prints k ≈ (2 ln cos β½ − ln 2)/(2π ln cos β½), β½ = m sqrt(ln 2):
+// an approximation, not the normalization (tests/ndf measures how far it is).
+// Jets: ∂I/∂m = ∫ e^{−θ²/m²} (2θ²/m³) cosθ sinθ dθ by the same quadrature, exact to rounding.
+// Sampling by a tabulated θ CDF (theta_cdf.h). Interface: see beckmann.h.
+#include <cmath>
+#include <memory>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/ndf/scalar_chain.h"
+#include "brdfkit/ndf/theta_cdf.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+// I(m) and dI/dm; memoized per thread on the last m, since fits construct the distribution
+// for every evaluation with the same m.
+double gaussian_ndf_integral(double m, double* dI_dm = nullptr);
+// Tabulated θ CDF of 2π D cosθ sinθ for width m.
+ThetaCdf gaussian_ndf_cdf(double m);
+
+template <class T> struct Gaussian {
+  T m;     // angular width in radians (C_TS = 1/m in seed 001)
+  T norm;  // k(m)
+
+  static ParamTable params() {
+    return {{"m", 1e-3, 1.5, 0.2, Scope::Shared, false, "Gaussian angular width in radians (seed 001 Table 1, m_G)"}};
+  }
+  explicit Gaussian(const T* p) : m(p[0]) {
+    double dI = 0.0;
+    const double I = gaussian_ndf_integral(value_of(m), &dI);
+    norm = T(1) / (T(2 * kPi) * chain(I, dI, m));
+  }
+
+  T unit(const T& cos_theta) const {
+    using std::acos;
+    using std::exp;
+    if (!(cos_theta > T(0))) return T(0);
+    if (!(cos_theta < T(1))) return T(1);  // acos' Jet derivative is 0/0 at 1
+    const T theta = acos(cos_theta);
+    return exp(-theta * theta / (m * m));
+  }
+  T D(const T& cos_theta) const { return norm * unit(cos_theta); }
+  T P22(const T& x) const {
+    using std::sqrt;
+    const T c2 = T(1) / (T(1) + x);
+    return D(sqrt(c2)) * c2 * c2;
+  }
+  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
+
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>
+  {
+    const double mv = m;
+    return direction_from_theta(cdf_->get([mv] { return gaussian_ndf_cdf(mv); }).sample(u.x()), u.y());
+  }
+  double pdf(const Vec3d& mm) const
+    requires std::is_same_v<T, double>
+  {
+    return D(mm.z()) * std::max(0.0, mm.z());
+  }
+
+ private:
+  std::shared_ptr<LazyThetaCdf> cdf_ = std::is_same_v<T, double> ? std::make_shared<LazyThetaCdf>() : nullptr;
+};
+
+}  // namespace brdfkit

@@ -1,0 +1,70 @@
+#pragma once
+// Trowbridge-Reitz / GGX distribution: P22(x) = α² / (π (α² + x)²), x = tan²θ
+// (seed 000 Table 1, DESIGN.md §3). Interface: see beckmann.h.
+#include <cmath>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+
+namespace brdfkit {
+
+template <class T> struct Ggx {
+  T alpha;  // Sawicki's C_TR; Disney roughness r maps to α = r² (DESIGN.md §3)
+
+  static ParamTable params() {
+    return {{"alpha", 1e-3, 2.0, 0.2, Scope::Shared, false, "GGX / Trowbridge-Reitz width C_TR (seed 000 Table 1)"}};
+  }
+  explicit Ggx(const T* p) : alpha(p[0]) {}
+
+  T P22(const T& x) const {
+    const T a2 = alpha * alpha;
+    const T s = a2 + x;
+    return a2 / (T(kPi) * s * s);
+  }
+  // Written in cos²θ directly: α² / (π (cos²θ (α² − 1) + 1)²), no tan² blow-up at grazing angles.
+  T D(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    const T a2 = alpha * alpha;
+    const T c2 = cos_theta * cos_theta;
+    const T s = c2 * (a2 - T(1)) + T(1);
+    return a2 / (T(kPi) * s * s);
+  }
+  // D/D(0) = α⁴ / (cos²θ (α² − 1) + 1)², the peak-normalized shape of seed 001 Table 1.
+  T unit(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    const T a2 = alpha * alpha;
+    const T c2 = cos_theta * cos_theta;
+    const T s = c2 * (a2 - T(1)) + T(1);
+    return a2 * a2 / (s * s);
+  }
+  // Closed-form Λ = (sqrt(1 + α² tan²θ) − 1)/2 (DESIGN.md §4).
+  T Lambda(const T& tan_theta) const {
+    using std::sqrt;
+    if (!(tan_theta > T(0))) return T(0);
+    const T at = alpha * tan_theta;
+    // (sqrt(1+y) − 1)/2 = y / (2 (sqrt(1+y) + 1)): no cancellation for small α tanθ.
+    const T y = at * at;
+    return y / (T(2) * (sqrt(T(1) + y) + T(1)));
+  }
+
+  // Inversion of the slope CDF F(x) = x/(α² + x): tan²θ = α² u/(1 − u) (Walter et al. 2007, Eq. 35).
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>
+  {
+    const double a2 = alpha * alpha;
+    // cos²θ = (1 − u)/(1 + (α² − 1) u), avoids the u → 1 division.
+    const double cos2 = (1.0 - u.x()) / (1.0 + (a2 - 1.0) * u.x());
+    const double cos_t = std::sqrt(std::clamp(cos2, 0.0, 1.0));
+    const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos2));
+    const double phi = 2 * kPi * u.y();
+    return Vec3d(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
+  }
+  double pdf(const Vec3d& m) const
+    requires std::is_same_v<T, double>
+  {
+    return D(m.z()) * std::max(0.0, m.z());
+  }
+};
+
+}  // namespace brdfkit

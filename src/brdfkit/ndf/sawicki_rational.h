@@ -1,0 +1,63 @@
+#pragma once
+// Sawicki's rational distribution (Sawicki 2006, seed 001 Table 1, DESIGN.md §3):
+//   D = 96 (3+N) cosθ / (π ((1−N) cosθ + N + 3)⁴),  D(0) = 3(3+N)/(8π).
+// Sampling by a tabulated θ CDF (theta_cdf.h). Interface: see beckmann.h.
+#include <cmath>
+#include <memory>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/ndf/theta_cdf.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+template <class T> struct SawickiRational {
+  T N;  // N_DS, sharpness
+
+  static ParamTable params() {
+    return {{"N", 0.0, 1e6, 50.0, Scope::Shared, false, "Sawicki rational sharpness N_DS (seed 001 Table 1)"}};
+  }
+  explicit SawickiRational(const T* p) : N(p[0]) {}
+
+  T D(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    const T q = (T(1) - N) * cos_theta + N + T(3);
+    const T q2 = q * q;
+    return T(96) * (T(3) + N) * cos_theta / (T(kPi) * q2 * q2);
+  }
+  // 256 cosθ / ((1−N) cosθ + N + 3)⁴ (seed 001 Table 1, unit form).
+  T unit(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    const T q = (T(1) - N) * cos_theta + N + T(3);
+    const T q2 = q * q;
+    return T(256) * cos_theta / (q2 * q2);
+  }
+  T P22(const T& x) const {
+    using std::sqrt;
+    const T c2 = T(1) / (T(1) + x);
+    return D(sqrt(c2)) * c2 * c2;
+  }
+  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
+
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>
+  {
+    const SawickiRational self = *this;
+    const ThetaCdf& cdf = cdf_->get([self] {
+      return ThetaCdf([&](double t) { return 2 * kPi * self.D(std::cos(t)) * std::cos(t) * std::sin(t); }, kPi / 2);
+    });
+    return direction_from_theta(cdf.sample(u.x()), u.y());
+  }
+  double pdf(const Vec3d& m) const
+    requires std::is_same_v<T, double>
+  {
+    return D(m.z()) * std::max(0.0, m.z());
+  }
+
+ private:
+  std::shared_ptr<LazyThetaCdf> cdf_ = std::is_same_v<T, double> ? std::make_shared<LazyThetaCdf>() : nullptr;
+};
+
+}  // namespace brdfkit

@@ -1,0 +1,56 @@
+#pragma once
+// Schlick's rational approximation of Beckmann (Schlick 1994c, as printed in seed 001 Table 1):
+//   D = m³ x / (π cosθ (m x² − x² + m²)²),  x = cosθ + m − 1,
+// defined only for cosθ ∈ [1−m, 1] (seed 001 §2) and zero outside, where it integrates to
+// exactly 1: with y = x², 2π∫D cosθ dcosθ = m³ ∫₀^{m²} dy/((m−1)y + m²)² = 1.
+// Interface: see beckmann.h.
+#include <cmath>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+template <class T> struct SchlickRational {
+  T m;  // Beckmann's m_B, in (0, 1]
+
+  static ParamTable params() {
+    return {{"m", 1e-3, 1.0, 0.2, Scope::Shared, false, "Schlick rational width, approximates Beckmann m_B (seed 001 Table 1)"}};
+  }
+  explicit SchlickRational(const T* p) : m(p[0]) {}
+
+  T D(const T& cos_theta) const {
+    const T x = cos_theta + m - T(1);
+    if (!(x > T(0)) || !(cos_theta > T(0))) return T(0);
+    const T q = m * x * x - x * x + m * m;
+    return m * m * m * x / (T(kPi) * cos_theta * q * q);
+  }
+  // D(0) = 1/(π m²): D/D(0) = m⁵ x / (cosθ (m x² − x² + m²)²) (seed 001 Table 1, unit form).
+  T unit(const T& cos_theta) const { return D(cos_theta) * T(kPi) * m * m; }
+  T P22(const T& x) const {
+    using std::sqrt;
+    const T c2 = T(1) / (T(1) + x);
+    return D(sqrt(c2)) * c2 * c2;
+  }
+  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
+
+  // Exact inversion: with y = x², P(X² ≤ y) = m y/((m−1) y + m²), so y = u m²/(m − u(m−1)).
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>
+  {
+    const double y = u.x() * m * m / (m - u.x() * (m - 1.0));
+    const double c = std::clamp(std::sqrt(std::max(0.0, y)) + 1.0 - m, 0.0, 1.0);
+    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+    const double phi = 2 * kPi * u.y();
+    return Vec3d(s * std::cos(phi), s * std::sin(phi), c);
+  }
+  double pdf(const Vec3d& mm) const
+    requires std::is_same_v<T, double>
+  {
+    return D(mm.z()) * std::max(0.0, mm.z());
+  }
+};
+
+}  // namespace brdfkit

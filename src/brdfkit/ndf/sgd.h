@@ -1,0 +1,93 @@
+#pragma once
+// Shifted gamma distribution (SGD), seed 000 §4.2 with its 1/π (DESIGN.md §3):
+//   P22(x) = α^{p−1}/Γ(1−p, α) · exp(−(α²+x)/α) / (α²+x)^p / π,  x = tan²θ.
+// With t = α + x/α this is K e^{−t} t^{−p} / π, K = 1/(α Γ(1−p, α)): the K that the published
+// Bagher fits list (data/published-fits/bagher2012-sgd.json `conventions`).
+// Γ(1−p, α) for 1−p ≤ 0 via upper_gamma.h. Jets: K carries exact derivatives (∂Γ/∂x closed
+// form, ∂Γ/∂s by quadrature). Interface: see beckmann.h.
+#include <cmath>
+#include <type_traits>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/models/param.h"
+#include "brdfkit/ndf/ggx.h"
+#include "brdfkit/ndf/upper_gamma.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+
+template <class T> struct Sgd {
+  T alpha;
+  T p;
+  T K;  // 1/(α Γ(1−p, α))
+
+  static ParamTable params() {
+    return {{"alpha", 1e-6, 2.0, 0.05, Scope::Shared, false, "SGD alpha: slope and slope^2 scale (seed 000 Sec. 4.2)"},
+            {"p", 0.0, 1.95, 0.5, Scope::Shared, false, "SGD shift exponent; 1-p > -1 needed by Gamma(1-p, alpha) (seed 000 Sec. 4.2)"}};
+  }
+  explicit Sgd(const T* params) : alpha(params[0]), p(params[1]), K(T(1) / (alpha * upper_gamma(T(1) - p, alpha))) {}
+
+  // K e^{−t} t^{−p}/π, t = α + x/α: the published form, free of α^{p−1} over/underflow.
+  T P22(const T& x) const {
+    using std::exp;
+    using std::pow;
+    const T t = alpha + x / alpha;
+    return K * exp(-t) / (pow(t, p) * T(kPi));
+  }
+  T D(const T& cos_theta) const {
+    if (!(cos_theta > T(0))) return T(0);
+    const T c2 = cos_theta * cos_theta;
+    return P22((T(1) - c2) / c2) / (c2 * c2);
+  }
+  // D/D(0) = e^{−(t−α)} (α/t)^p with t = α + tan²θ/α.
+  T unit(const T& cos_theta) const {
+    using std::exp;
+    using std::pow;
+    if (!(cos_theta > T(0))) return T(0);
+    const T c2 = cos_theta * cos_theta;
+    const T x = (T(1) - c2) / c2;
+    const T t = alpha + x / alpha;
+    return exp(-x / alpha) * pow(alpha / t, p) / (c2 * c2);
+  }
+  // No closed form (seed 000 §4.3: Λ involves the confluent hypergeometric U).
+  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
+
+  // Exact inversion of Fθ = 1 − Γ(1−p, α + tan²θ/α)/Γ(1−p, α) (seed 000 §4.5) by toms748.
+  Vec3d sample(const Vec2d& u) const
+    requires std::is_same_v<T, double>;
+  double pdf(const Vec3d& m) const
+    requires std::is_same_v<T, double>
+  {
+    return D(m.z()) * std::max(0.0, m.z());
+  }
+
+  // Seed 000 §4.5's proxy: m from GGX with width α (tanθ = α sqrt(u/(1−u))), weight = the
+  // ratio of SGD's density to GGX's, D_sgd(m)/D_ggx(m), so that E[w f(m)] = ∫ f D_sgd cos dω.
+  // (The paper's printed BRDF weight misses |i·m|/cosθi, DESIGN.md §6; that factor belongs
+  // to the BRDF's half-vector Jacobian, not to this density ratio.)
+  Vec3d sample_ggx_proxy(const Vec2d& u, double* weight) const
+    requires std::is_same_v<T, double>;
+};
+
+// Inverse of Fθ by root finding on t ∈ [α, ∞): Γ(s, t) = (1−u) Γ(s, α), s = 1−p.
+Vec3d sgd_sample(double alpha, double p, const Vec2d& u);
+
+template <class T>
+Vec3d Sgd<T>::sample(const Vec2d& u) const
+  requires std::is_same_v<T, double>
+{
+  return sgd_sample(alpha, p, u);
+}
+
+template <class T>
+Vec3d Sgd<T>::sample_ggx_proxy(const Vec2d& u, double* weight) const
+  requires std::is_same_v<T, double>
+{
+  const Ggx<double> ggx(&alpha);
+  const Vec3d m = ggx.sample(u);
+  const double d_ggx = ggx.D(m.z());
+  *weight = d_ggx > 0.0 ? D(m.z()) / d_ggx : 0.0;
+  return m;
+}
+
+}  // namespace brdfkit

@@ -1,0 +1,62 @@
+#pragma once
+// Synthetic measured materials for the fit tests: an analytic model as a MeasuredBrdf (exact
+// values anywhere) and MERL-format tables tabulated from known parameters.
+#include <functional>
+#include <random>
+
+#include "brdfkit/measured/merl_brdf.h"
+#include "brdfkit/measured/merl_tabulate.h"
+#include "brdfkit/models/model.h"
+
+namespace brdfkit::test {
+
+class AnalyticMeasured final : public MeasuredBrdf {
+ public:
+  AnalyticMeasured(const Model& model, ParamValues values) : brdf_(model, std::move(values)) {}
+  std::string format() const override { return "analytic"; }
+  std::string path() const override { return "analytic:" + std::string(brdf_.model().name()); }
+  std::string dimensions() const override { return "continuous"; }
+  std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const override {
+    if (!(wi.z() > 0 && wo.z() > 0)) return std::nullopt;
+    return brdf_.eval(wi, wo);
+  }
+  SampleSet samples() const override { return {}; }
+
+ private:
+  Brdf brdf_;
+};
+
+// Parameter values from name → (R, G, B) lists; unspecified parameters keep their defaults.
+inline ParamValues make_values(const Model& m, std::initializer_list<std::pair<const char*, Rgb>> vals) {
+  ParamValues v = ParamValues::defaults(m.params());
+  for (const auto& [name, rgb] : vals) {
+    const int i = find_param(m.params(), name);
+    EXPECT_GE(i, 0) << name;
+    for (int c = 0; c < 3; ++c) v.values[size_t(c)][size_t(i)] = rgb[c];
+  }
+  return v;
+}
+
+// A MERL table of the model, with a fraction of the cells marked "not measured" and
+// multiplicative Gaussian noise of relative size `noise`, both seeded.
+inline merl::Table tabulate_model(const Model& m, const ParamValues& v, double missing = 0, double noise = 0,
+                                  std::uint64_t seed = 7) {
+  const Brdf brdf(m, v);
+  merl::Table t = merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return brdf.eval(wi, wo); });
+  if (missing > 0 || noise > 0) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::normal_distribution<double> g(0, 1);
+    for (size_t k = 0; k < merl::kCellCount; ++k) {
+      if (!t.valid(k)) continue;
+      const bool drop = u(rng) < missing;
+      Rgb r(t.raw(0, k), t.raw(1, k), t.raw(2, k));
+      if (noise > 0) r *= (1.0 + noise * g(rng));
+      if (drop) r = Rgb::Constant(-1.0);
+      t.set_raw(k, r[0], r[1], r[2]);
+    }
+  }
+  return t;
+}
+
+}  // namespace brdfkit::test

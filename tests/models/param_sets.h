@@ -1,0 +1,39 @@
+#pragma once
+// Parameter sets the model tests run every registered model at: the defaults, and every lobe-shape
+// (non-linear) parameter moved towards each bound (geometrically when the range is positive, so
+// a width of 0.2 in [1e-3, 2] becomes 0.45 and 0.031: a rough and a sharp lobe).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "brdfkit/models/model.h"
+
+namespace brdfkit::test {
+
+struct NamedParams {
+  std::string label;
+  ParamValues values;
+};
+
+inline std::vector<NamedParams> model_param_sets(const Model& m, double fraction = 0.35) {
+  const ParamTable& t = m.params();
+  std::vector<NamedParams> sets{{"defaults", ParamValues::defaults(t)}};
+  for (int dir : {+1, -1}) {
+    ParamValues v = ParamValues::defaults(t);
+    for (size_t i = 0; i < t.size(); ++i) {
+      const ParamSpec& s = t[i];
+      if (s.linear) continue;
+      const double target = dir > 0 ? s.upper : s.lower;
+      double x;
+      if (s.lower > 0 && s.def > 0)
+        x = s.def * std::pow(target / s.def, fraction);
+      else
+        x = s.def + (target - s.def) * fraction;
+      for (auto& ch : v.values) ch[i] = x;
+    }
+    sets.push_back({dir > 0 ? "shape towards upper bounds" : "shape towards lower bounds", v});
+  }
+  return sets;
+}
+
+}  // namespace brdfkit::test
