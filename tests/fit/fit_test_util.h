@@ -1,6 +1,8 @@
 #pragma once
 // Synthetic measured materials for the fit tests: an analytic model as a MeasuredBrdf (exact
 // values anywhere) and MERL-format tables tabulated from known parameters.
+#include <gtest/gtest.h>
+
 #include <functional>
 #include <random>
 

@@ -2,10 +2,12 @@
 // bad input exits with 2 and a message naming the problem.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "brdfkit/core/error.h"
 #include "brdfkit/fit/file_digest.h"
 #include "brdfkit/measured/merl.h"
 #include "fit_test_util.h"

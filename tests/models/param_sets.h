@@ -1,7 +1,8 @@
 #pragma once
 // Parameter sets the model tests run every registered model at: the defaults, and every lobe-shape
-// (non-linear) parameter moved towards each bound (geometrically when the range is positive, so
-// a width of 0.2 in [1e-3, 2] becomes 0.45 and 0.031: a rough and a sharp lobe).
+// (non-linear) parameter moved 35 % of the way towards each bound (geometrically, by at most a
+// factor 3, when the range is positive: a width of 0.2 in [1e-3, 2] becomes 0.45 and 0.067).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -25,8 +26,8 @@ inline std::vector<NamedParams> model_param_sets(const Model& m, double fraction
       if (s.linear) continue;
       const double target = dir > 0 ? s.upper : s.lower;
       double x;
-      if (s.lower > 0 && s.def > 0)
-        x = s.def * std::pow(target / s.def, fraction);
+      if (s.lower > 0 && s.def > 0)  // geometric, at most a factor 3: huge ranges stay testable
+        x = s.def * std::clamp(std::pow(target / s.def, fraction), 1.0 / 3.0, 3.0);
       else
         x = s.def + (target - s.def) * fraction;
       for (auto& ch : v.values) ch[i] = x;

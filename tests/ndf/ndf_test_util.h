@@ -31,14 +31,14 @@ inline double integrate_over_theta(const std::function<double(double)>& f_of_cos
           const double th = theta_of_t(t);
           return 2 * kPi * f_of_cos(std::cos(th)) * std::sin(th) * dtheta_dt(t);
         },
-        a, b, 12, 1e-12);
+        a, b, 10, 1e-10);
   }
   return sum;
 }
 
 // ∫ D(ωm) cosθm dωm over the hemisphere.
 inline double cos_weighted_integral(const std::function<double(double)>& D) {
-  return integrate_over_theta([&](double c) { return D(c) * c; }, 0.0, 1.0, 32);
+  return integrate_over_theta([&](double c) { return D(c) * c; }, 0.0, 1.0, 16);
 }
 
 struct Chi2Outcome {

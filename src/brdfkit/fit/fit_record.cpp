@@ -121,8 +121,9 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
     r.coarsen = g.get<int>();
   }
   if (j.contains("metrics") && j["metrics"].is_object())
-    for (const auto& [id, v] : j["metrics"].items())
-      r.metrics.push_back({id, v.is_number() ? std::optional<double>(v.get<double>()) : std::nullopt, ""});
+    for (const auto& it : j["metrics"].items())
+      r.metrics.push_back(
+          {it.key(), it.value().is_number() ? std::optional<double>(it.value().get<double>()) : std::nullopt, ""});
   return r;
 }
 

@@ -73,6 +73,7 @@ class Problem {
     }
     classes_ = channel_independent() ? 1 : 3;
     if (project_) basis_.assign(size_t(classes_) * bases_.size(), std::vector<double>(n_));
+    for (size_t j = 0; j < bases_.size(); ++j) constant_.push_back(shape_independent(j));
   }
 
   const std::vector<Var>& vars() const { return vars_; }
@@ -102,6 +103,7 @@ class Problem {
       const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
       for (int q = 0; q < classes_; ++q) {
         for (size_t j = 0; j < K; ++j) {
+          if (constant_[j] && bases_ready_) continue;  // e.g. the Lambertian 1/π: computed once
           std::vector<double> p = pv.values[size_t(q)];
           for (const Basis& b : bases_) p[size_t(b.lin)] = 0.0;
           p[size_t(bases_[j].lin)] = 1.0;
@@ -138,6 +140,7 @@ class Problem {
         }
       }
     });
+    bases_ready_ = true;
     Eigen::VectorXd lo(K), hi(K);
     for (size_t j = 0; j < K; ++j) {
       const ParamSpec& s = table_[size_t(bases_[j].lin)];
@@ -282,6 +285,28 @@ class Problem {
     }
   }
 
+  // Whether basis j is the same for every value of the solver's parameters (probed at the
+  // defaults and at another point of the bounds): then it is evaluated once per fit.
+  bool shape_independent(size_t j) const {
+    const ParamValues pv = ParamValues::defaults(table_);
+    for (int c = 0; c < classes_; ++c) {
+      std::vector<double> a = pv.values[size_t(c)];
+      for (const Basis& b : bases_) a[size_t(b.lin)] = 0.0;
+      a[size_t(bases_[j].lin)] = 1.0;
+      if (bases_[j].affine >= 0) a[size_t(bases_[j].affine)] = bases_[j].affine_value;
+      std::vector<double> b = a;
+      for (const Var& v : vars_) {
+        const ParamSpec& s = table_[size_t(v.param)];
+        if (v.channel < 0 || v.channel == c) b[size_t(v.param)] = s.lower + 0.371 * (s.upper - s.lower);
+      }
+      for (int k = 0; k < 12; ++k) {
+        const auto [wi, wo] = probe(k);
+        if (model_.eval(a.data(), c, wi, wo) != model_.eval(b.data(), c, wi, wo)) return false;
+      }
+    }
+    return true;
+  }
+
   // Whether channel c changes the model's value at equal parameters (wavelength-dependent
   // models do): probed at a few fixed direction pairs; if not, one basis serves R, G and B.
   bool channel_independent() const {
@@ -310,6 +335,8 @@ class Problem {
   std::vector<Var> vars_;
   int classes_ = 3;
   std::vector<std::vector<double>> basis_;
+  std::vector<bool> constant_;
+  bool bases_ready_ = false;
 };
 
 // The projected (or plain) residual as one Ceres cost with forward-difference derivatives
@@ -324,9 +351,18 @@ class ProjectedCost final : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const auto& vars = problem_.vars();
     const size_t n = vars.size(), m = problem_.residual_count();
-    ParamValues pv = base_;
-    problem_.to_values(parameters[0], pv);
-    if (!problem_.residuals(pv, residuals)) return false;
+    // Ceres evaluates a trial point without derivatives, then again with them once accepted:
+    // the second residual evaluation is served from here.
+    if (!last_r_.empty() && std::equal(last_x_.begin(), last_x_.end(), parameters[0])) {
+      std::copy(last_r_.begin(), last_r_.end(), residuals);
+    } else {
+      ParamValues pv = base_;
+      problem_.to_values(parameters[0], pv);
+      last_r_.clear();
+      if (!problem_.residuals(pv, residuals)) return false;
+      last_x_.assign(parameters[0], parameters[0] + n);
+      last_r_.assign(residuals, residuals + m);
+    }
     if (!jacobians || !jacobians[0]) return true;
     std::vector<double> x(parameters[0], parameters[0] + n), rh(m);
     for (size_t v = 0; v < n; ++v) {
@@ -350,6 +386,7 @@ class ProjectedCost final : public ceres::CostFunction {
  private:
   Problem& problem_;
   ParamValues base_;
+  mutable std::vector<double> last_x_, last_r_;
 };
 
 double draw(const ParamSpec& s, std::mt19937_64& rng) {

@@ -11,8 +11,11 @@
 #include <string_view>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/measured/alta_slice.h"
+#include "brdfkit/measured/cornell.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_brdf.h"
+#include "brdfkit/measured/rgl_tensor.h"
 
 namespace brdfkit {
 namespace {
@@ -69,9 +72,11 @@ std::unique_ptr<MeasuredBrdf> load_measured(const std::filesystem::path& file) {
     case MeasuredFormat::Merl:
       return read_merl(file);
     case MeasuredFormat::Rgl:
+      return read_rgl(file);
     case MeasuredFormat::Cornell:
+      return read_cornell(file);
     case MeasuredFormat::Alta:
-      throw InputError(file.string(), "this format is not supported yet in this build");
+      return read_alta_slice(file);
     case MeasuredFormat::Unknown:
       break;
   }

@@ -209,6 +209,7 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
   sigma_ = MarginalWarp2D(floats(bytes, sigma_f).data(), int(sigma_f.shape[1]), int(sigma_f.shape[0]), {}, false);
   vndf_ = MarginalWarp2D(floats(bytes, vndf_f).data(), int(vs[3]), int(vs[2]), params, true);
   luminance_raw_ = floats(bytes, lum_f);
+  luminance_ = MarginalWarp2D(luminance_raw_.data(), grid_, grid_, params, false);
   for (size_t c = 0; c < 3; ++c) rgb_[c] = MarginalWarp2D(rgb[c].data(), grid_, grid_, params, false);
   rgb_raw_ = std::move(rgb);
   for (const auto& table : {floats(bytes, ndf_f), floats(bytes, sigma_f), floats(bytes, vndf_f)})
@@ -223,7 +224,17 @@ std::string RglBrdf::dimensions() const {
 
 std::optional<Rgb> RglBrdf::eval(const Vec3d& wi, const Vec3d& wo) const { return eval_conditioned(wi, wo, true); }
 
-std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other) const {
+namespace {
+// What eval needs of a direction pair: table coordinates and the factor D/(4σ(ωc) cos θ).
+struct Lookup {
+  Vec2d sample;
+  double params[2];
+  double factor;
+};
+
+// Shared by eval_conditioned, eval_luminance and table_coordinates, so they agree by construction.
+std::optional<Lookup> lookup_pair(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other, bool jacobian,
+                                  const MarginalWarp2D& vndf, const MarginalWarp2D& ndf, const MarginalWarp2D& sigma) {
   if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
   const Vec3d m = (wc + wx).normalized();
   const double theta_c = elevation(wc), phi_c = std::atan2(wc.y(), wc.x());
@@ -232,15 +243,35 @@ std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, b
   const Vec2d u_c(theta2u(theta_c), phi2u(phi_c));
   Vec2d u_m(theta2u(theta_m), phi2u(phi_m - phi_c));
   u_m.y() -= std::floor(u_m.y());
-  const double params[2] = {phi_c, theta_c};
-  const Vec2d sample = vndf_.invert(u_m, params).first;
-  Rgb v;
-  for (int c = 0; c < 3; ++c) v[c] = rgb_[size_t(c)].eval(sample, params);
+  Lookup r;
+  r.params[0] = phi_c;
+  r.params[1] = theta_c;
+  r.sample = vndf.invert(u_m, r.params).first;
   const double cos_theta = cosine_of_other ? wx.z() : wc.z();
-  // DESIGN.md §2: ρ = RGB · D(h) / (4 σ(ωc) cos θx); with jacobian = 0 the table holds ρ·cos θx.
-  if (jacobian_) v *= ndf_.eval(u_m) / (4 * sigma_.eval(u_c) * cos_theta);
-  else v /= cos_theta;
-  return v;
+  // DESIGN.md §2: ρ = table · D(h) / (4 σ(ωc) cos θx); with jacobian = 0 the table holds ρ·cos θx.
+  r.factor = jacobian ? ndf.eval(u_m) / (4 * sigma.eval(u_c) * cos_theta) : 1 / cos_theta;
+  return r;
+}
+}  // namespace
+
+std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other) const {
+  const auto l = lookup_pair(wc, wx, cosine_of_other, jacobian_, vndf_, ndf_, sigma_);
+  if (!l) return std::nullopt;
+  Rgb v;
+  for (int c = 0; c < 3; ++c) v[c] = rgb_[size_t(c)].eval(l->sample, l->params);
+  return Rgb(v * l->factor);
+}
+
+std::optional<double> RglBrdf::eval_luminance(const Vec3d& wi, const Vec3d& wo) const {
+  const auto l = lookup_pair(wi, wo, true, jacobian_, vndf_, ndf_, sigma_);
+  if (!l) return std::nullopt;
+  return luminance_.eval(l->sample, l->params) * l->factor;
+}
+
+std::optional<Vec2d> RglBrdf::table_coordinates(const Vec3d& wc, const Vec3d& wx) const {
+  const auto l = lookup_pair(wc, wx, true, jacobian_, vndf_, ndf_, sigma_);
+  if (!l) return std::nullopt;
+  return l->sample;
 }
 
 Rgb RglBrdf::rgb_node(size_t t, int y, int x) const {

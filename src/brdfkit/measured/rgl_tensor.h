@@ -15,6 +15,7 @@
 
 #include "brdfkit/measured/marginal_warp_2d.h"
 #include "brdfkit/measured/measured_brdf.h"
+#include "brdfkit/measured/sample_set.h"
 
 namespace brdfkit {
 
@@ -37,6 +38,11 @@ class RglBrdf final : public MeasuredBrdf {
   // ρ with the table conditioned on `wc` and the other direction `wx`. With `cosine_of_other`
   // false the cosine is taken on ωc (pbrt-v4 before PR #215): only for tests that show it wrong.
   std::optional<Rgb> eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other = true) const;
+  // ρ's luminance from the file's own `luminance` table through the same warp and factors as
+  // eval(): a second table, so it cross-checks eval() (linear-sRGB Y of `rgb`).
+  std::optional<double> eval_luminance(const Vec3d& wi, const Vec3d& wo) const;
+  // The point of the table's unit square (x: columns, y: rows) that eval(wc, wx) interpolates.
+  std::optional<Vec2d> table_coordinates(const Vec3d& wc, const Vec3d& wx) const;
   // Directional albedo a(wi) = ∫ ρ(wi, wo) cosθo dωo by an n×n midpoint rule in the unit square of
   // the VNDF warp (so the points follow the lobe), per channel.
   Rgb albedo(const Vec3d& wi, int n = 64) const;
@@ -60,7 +66,7 @@ class RglBrdf final : public MeasuredBrdf {
   size_t negative_values_ = 0;
   int grid_ = 0;
   std::vector<float> theta_i_;
-  MarginalWarp2D ndf_, sigma_, vndf_;
+  MarginalWarp2D ndf_, sigma_, vndf_, luminance_;
   std::array<MarginalWarp2D, 3> rgb_;           // one interpolant per channel (bilinear, no CDF)
   std::array<std::vector<float>, 3> rgb_raw_;   // [theta_i][y][x] per channel
   std::vector<float> luminance_raw_;            // [theta_i][y][x]

@@ -8,6 +8,7 @@
 #include "brdfkit/models/lafortune.h"
 #include "brdfkit/models/lambert.h"
 #include "brdfkit/models/low_smooth.h"
+#include "brdfkit/models/published_fits.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
 #include "brdfkit/models/model.h"
@@ -26,7 +27,15 @@ std::span<const Model* const> all_models() {
       instance<Lambert>(),
       cook_torrance_ngan_model(),
       cook_torrance_beckmann_model(),
+      cook_torrance_blinn_phong_model(),
+      cook_torrance_gaussian_model(),
       cook_torrance_ggx_model(),
+      cook_torrance_gtr_model(),
+      cook_torrance_exponential_model(),
+      cook_torrance_sgd_model(),
+      cook_torrance_exponential_power_model(),
+      cook_torrance_schlick_rational_model(),
+      cook_torrance_sawicki_rational_model(),
       instance<Ward>(),
       instance<WardAniso>(),
       instance<WardDuer>(),
@@ -37,6 +46,7 @@ std::span<const Model* const> all_models() {
       instance<AshikhminShirleyDielectric>(),
       instance<LowSmooth>(),
       instance<LowSmooth2>(),
+      low_cook_torrance_model(),
   };
   return models;
 }

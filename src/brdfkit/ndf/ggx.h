@@ -22,20 +22,20 @@ template <class T> struct Ggx {
     const T s = a2 + x;
     return a2 / (T(kPi) * s * s);
   }
-  // Written in cos²θ directly: α² / (π (cos²θ (α² − 1) + 1)²), no tan² blow-up at grazing angles.
+  // Written in cos²θ directly: α² / (π (cos²θ (α² − 1) + 1)²), no tan² blow-up at grazing angles;
+  // the denominator as α² cos²θ + sin²θ, sin²θ = (1−c)(1+c), is exact at θ = 0 for tiny α.
+  static T denom(const T& a2, const T& c) { return a2 * c * c + (T(1) - c) * (T(1) + c); }
   T D(const T& cos_theta) const {
     if (!(cos_theta > T(0))) return T(0);
     const T a2 = alpha * alpha;
-    const T c2 = cos_theta * cos_theta;
-    const T s = c2 * (a2 - T(1)) + T(1);
+    const T s = denom(a2, cos_theta);
     return a2 / (T(kPi) * s * s);
   }
   // D/D(0) = α⁴ / (cos²θ (α² − 1) + 1)², the peak-normalized shape of seed 001 Table 1.
   T unit(const T& cos_theta) const {
     if (!(cos_theta > T(0))) return T(0);
     const T a2 = alpha * alpha;
-    const T c2 = cos_theta * cos_theta;
-    const T s = c2 * (a2 - T(1)) + T(1);
+    const T s = denom(a2, cos_theta);
     return a2 * a2 / (s * s);
   }
   // Closed-form Λ = (sqrt(1 + α² tan²θ) − 1)/2 (DESIGN.md §4).

@@ -44,8 +44,7 @@ template <class T> struct Gtr {
   T D(const T& cos_theta) const {
     using std::pow;
     if (!(cos_theta > T(0))) return T(0);
-    const T s = T(1) + (alpha * alpha - T(1)) * cos_theta * cos_theta;
-    return norm / pow(s, gamma);
+    return norm / pow(denom(cos_theta), gamma);
   }
   T P22(const T& x) const {
     const T c2 = T(1) / (T(1) + x);
@@ -56,9 +55,7 @@ template <class T> struct Gtr {
   T unit(const T& cos_theta) const {
     using std::pow;
     if (!(cos_theta > T(0))) return T(0);
-    const T a2 = alpha * alpha;
-    const T s = T(1) + (a2 - T(1)) * cos_theta * cos_theta;
-    return pow(a2 / s, gamma);
+    return pow(alpha * alpha / denom(cos_theta), gamma);
   }
   // Closed form only at γ = 2 (GGX); numeric for every γ so that ∂Λ/∂γ stays right.
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
@@ -91,6 +88,8 @@ template <class T> struct Gtr {
   }
 
  private:
+  // s = 1 + (α²−1) cos²θ written as α² cos²θ + (1−c)(1+c): exact at θ = 0 for tiny α.
+  T denom(const T& c) const { return alpha * alpha * c * c + (T(1) - c) * (T(1) + c); }
   static bool abs_less(const T& x, double bound) { return x < T(bound) && x > T(-bound); }
 };
 

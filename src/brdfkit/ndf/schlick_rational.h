@@ -22,7 +22,7 @@ template <class T> struct SchlickRational {
   explicit SchlickRational(const T* p) : m(p[0]) {}
 
   T D(const T& cos_theta) const {
-    const T x = cos_theta + m - T(1);
+    const T x = m - (T(1) - cos_theta);  // exact x = m at θ = 0
     if (!(x > T(0)) || !(cos_theta > T(0))) return T(0);
     const T q = m * x * x - x * x + m * m;
     return m * m * m * x / (T(kPi) * cos_theta * q * q);

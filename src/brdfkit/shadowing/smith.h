@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/shadowing/smith_integral.h"
@@ -46,6 +47,21 @@ template <template <class> class Ndf> const SmithLambdaTable& smith_lambda_table
   });
   return table;
 }
+
+// Tables for the scale families with closed forms exist too: the tests check the table against
+// those closed forms (the distributions themselves use their closed-form Λ).
+template <class T> struct Beckmann;
+template <class T> struct Ggx;
+template <> struct SmithShape<Beckmann> {
+  static constexpr int kDims = 1;
+  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 12, true}}; }
+  template <class T> static std::array<T, 1> values(const Beckmann<T>& d) { return {d.alpha}; }
+};
+template <> struct SmithShape<Ggx> {
+  static constexpr int kDims = 1;
+  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 12, true}}; }
+  template <class T> static std::array<T, 1> values(const Ggx<T>& d) { return {d.alpha}; }
+};
 
 // Λ of a distribution that has no SmithShape (or is not a one-parameter template): direct integral.
 template <class Ndf, class T> T smith_lambda_numeric(const Ndf& ndf, const T& tan_theta) {

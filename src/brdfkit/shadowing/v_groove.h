@@ -13,7 +13,8 @@ template <class T> T v_groove_g(const Vec3<T>& wi, const Vec3<T>& wo) {
   const T len = s.norm();
   if (!(len > T(0))) return T(0);
   const Vec3<T> h = s / len;
-  const T oh = wo.dot(h);
+  // wo·h = wi·h analytically; their mean keeps G exactly symmetric in floating point.
+  const T oh = T(0.5) * s.dot(h);
   if (!(oh > T(0))) return T(0);
   const T k = T(2) * h.z() / oh;
   const T go = k * wo.z();

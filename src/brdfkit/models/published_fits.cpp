@@ -1,0 +1,170 @@
+#include "brdfkit/models/published_fits.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/fresnel/dielectric.h"
+#include "brdfkit/models/cook_torrance.h"
+#include "brdfkit/models/microfacet_model.h"
+#include "brdfkit/models/named_model.h"
+#include "brdfkit/ndf/beckmann.h"
+
+namespace brdfkit {
+
+namespace {
+
+using LowCookTorrance =
+    Named<CookTorrance<Beckmann, DielectricFresnel, Masking::VGroove>, "cook-torrance-low2012",
+          "kd/pi + ks F D G/(4 cos_i cos_o): Beckmann D, dielectric F(eta), V-groove G (Low 2012's published fits)">;
+
+const Model* find_model(const std::string& name) {
+  for (const Model* m : all_models())
+    if (m->name() == name) return m;
+  return nullptr;
+}
+
+// Per-channel value: an array of three numbers, or one number for all channels.
+std::array<double, 3> channels(const nlohmann::json& params, const std::string& key, const std::string& where) {
+  if (!params.contains(key)) throw InputError(where, "missing parameter '" + key + "'");
+  const auto& x = params[key];
+  std::array<double, 3> out{};
+  if (x.is_number()) {
+    out.fill(x.get<double>());
+  } else if (x.is_array() && x.size() == 3 && std::all_of(x.begin(), x.end(), [](auto& e) { return e.is_number(); })) {
+    for (int c = 0; c < 3; ++c) out[size_t(c)] = x[size_t(c)].get<double>();
+  } else {
+    throw InputError(where, "parameter '" + key + "' is neither a number nor an array of 3 numbers");
+  }
+  for (double v : out)
+    if (!std::isfinite(v)) throw InputError(where, "parameter '" + key + "' is not finite");
+  return out;
+}
+
+void put(ParamValues& v, const Model& m, const std::string& name, const std::array<double, 3>& x) {
+  const int i = find_param(m.params(), name);
+  if (i < 0) throw InputError("model '" + std::string(m.name()) + "'", "has no parameter '" + name + "'");
+  for (int c = 0; c < 3; ++c) v.values[size_t(c)][size_t(i)] = x[size_t(c)];
+}
+
+std::array<double, 3> scaled(std::array<double, 3> x, double s) {
+  for (double& v : x) v *= s;
+  return x;
+}
+
+}  // namespace
+
+const Model* low_cook_torrance_model() {
+  static const MicrofacetModelAdapter<LowCookTorrance> m;
+  return &m;
+}
+
+PublishedFits PublishedFits::read(const std::filesystem::path& file) {
+  const std::string where = file.string();
+  std::ifstream in(file);
+  if (!in) throw InputError(where, "cannot open the file");
+  PublishedFits out;
+  out.file_ = file;
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where, std::string("not valid JSON: ") + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("materials") || !doc["materials"].is_object() || doc["materials"].empty())
+    throw InputError(where, "no 'materials' object");
+  out.materials_ = std::move(doc["materials"]);
+  // The specular lobe's name: the first lobe that is not the Lambertian one.
+  const auto& first = out.materials_.begin().value();
+  if (!first.is_array()) throw InputError(where, "material '" + out.materials_.begin().key() + "' is not a list of lobes");
+  for (const auto& lobe : first)
+    if (lobe.is_object() && lobe.value("lobe", "") != "Lambertian") out.lobe_ = lobe.value("lobe", "");
+  if (out.lobe_ == "LowSmooth") out.model_ = "low-smooth";
+  else if (out.lobe_ == "LowAshikhminShirley") out.model_ = "ashikhmin-shirley-dielectric";
+  else if (out.lobe_ == "LowCookTorrance") out.model_ = "cook-torrance-low2012";
+  else if (out.lobe_ == "Bagher") {
+    if (find_model("cook-torrance-sgd")) out.model_ = "cook-torrance-sgd";
+    else out.reason_ = "lobe 'Bagher' needs the model cook-torrance-sgd (SGD distribution, Bagher Fresnel), not in this build";
+  } else if (out.lobe_ == "LowMicrofacetFit") {
+    out.reason_ = "lobe 'LowMicrofacetFit' needs the Low 2012 microfacet model (seed 003 Eq. 15), not in the catalogue yet";
+  } else {
+    out.reason_ = "unknown lobe '" + out.lobe_ + "'";
+  }
+  return out;
+}
+
+std::vector<std::string> PublishedFits::materials() const {
+  std::vector<std::string> names;
+  for (auto it = materials_.begin(); it != materials_.end(); ++it) names.push_back(it.key());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+Brdf PublishedFits::brdf(const std::string& material) const {
+  const std::string where = file_.string();
+  if (!supported()) throw InputError(where, "unsupported: " + reason_);
+  if (!materials_.contains(material)) throw InputError(where, "no material '" + material + "'");
+  const Model* m = model_ == "cook-torrance-low2012" ? low_cook_torrance_model() : find_model(model_);
+  if (!m) throw InputError(where, "model '" + model_ + "' is not registered");
+  ParamValues v = ParamValues::defaults(m->params());
+  const std::string mwhere = where + ": material '" + material + "'";
+  bool have_diffuse = false, have_lobe = false;
+  for (const auto& lobe : materials_[material]) {
+    if (!lobe.is_object() || !lobe.contains("params") || !lobe["params"].is_object())
+      throw InputError(mwhere, "a lobe without a 'params' object");
+    const std::string name = lobe.value("lobe", "");
+    const auto& p = lobe["params"];
+    const std::string lwhere = mwhere + ", lobe '" + name + "'";
+    if (name == "Lambertian") {
+      put(v, *m, "kd", channels(p, "albedo", lwhere));  // conventions: albedo[c]/π
+      have_diffuse = true;
+    } else if (name == lobe_ && name == "LowSmooth") {
+      put(v, *m, "A", channels(p, "A", lwhere));
+      put(v, *m, "B", channels(p, "B", lwhere));
+      put(v, *m, "C", channels(p, "C", lwhere));
+      put(v, *m, "eta", channels(p, "eta", lwhere));
+      have_lobe = true;
+    } else if (name == lobe_ && name == "LowAshikhminShirley") {
+      put(v, *m, "ks", channels(p, "albedo", lwhere));
+      put(v, *m, "N", channels(p, "sharpness", lwhere));
+      put(v, *m, "eta", channels(p, "fresnelReflectance", lwhere));
+      have_lobe = true;
+    } else if (name == lobe_ && name == "LowCookTorrance") {
+      // albedo·D'·G·F/(π ci co) with D' = π D_Beckmann (no 1/π in the file's D) = 4·albedo · D F G/(4 ci co).
+      put(v, *m, "ks", scaled(channels(p, "albedo", lwhere), 4.0));
+      put(v, *m, "alpha", channels(p, "roughness", lwhere));
+      put(v, *m, "eta", channels(p, "eta", lwhere));
+      have_lobe = true;
+    } else if (name == lobe_ && name == "Bagher") {
+      // albedo·D·G·F/(π ci co) (seed 000 Eq. 1, normalized D) = (4 albedo/π) · D F G/(4 ci co).
+      put(v, *m, "ks", scaled(channels(p, "albedo", lwhere), 4.0 * kInvPi));
+      put(v, *m, "alpha", channels(p, "alpha", lwhere));
+      put(v, *m, "p", channels(p, "p", lwhere));
+      if (!p.contains("eta") || !p["eta"].is_array() || p["eta"].size() != 2)
+        throw InputError(lwhere, "parameter 'eta' is not a pair [F0[3], F1[3]]");
+      nlohmann::json f{{"F0", p["eta"][0]}, {"F1", p["eta"][1]}};
+      put(v, *m, "F0", channels(f, "F0", lwhere + " eta[0]"));
+      put(v, *m, "F1", channels(f, "F1", lwhere + " eta[1]"));
+      have_lobe = true;
+    } else {
+      throw InputError(lwhere, "unexpected lobe in a '" + lobe_ + "' file");
+    }
+  }
+  if (!have_diffuse) throw InputError(mwhere, "no 'Lambertian' lobe");
+  if (!have_lobe) throw InputError(mwhere, "no '" + lobe_ + "' lobe");
+  return Brdf(*m, std::move(v));
+}
+
+std::vector<std::filesystem::path> published_fit_files(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    if (e.is_regular_file() && e.path().extension() == ".json") out.push_back(e.path());
+  if (ec) throw InputError(dir.string(), "cannot list the folder: " + ec.message());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace brdfkit

@@ -1,0 +1,58 @@
+#pragma once
+// Parameters the papers published for the 100 MERL materials (data/published-fits/*.json,
+// DESIGN.md §10), loaded into brdfkit models with the meaning each file's `conventions` gives
+// them (which differs from the papers' printed equations in places):
+//
+//   file lobe            brdfkit model                   conversion
+//   LowSmooth            low-smooth                      A, B, C, eta as published
+//   LowAshikhminShirley  ashikhmin-shirley-dielectric    ks = albedo, N = sharpness, eta = fresnelReflectance
+//   LowCookTorrance      cook-torrance-low2012           ks = 4·albedo: the file's D has no 1/π and the lobe
+//                                                        a 1/π, so albedo·πD·G·F/(π ci co) = 4 albedo · D F G/(4 ci co)
+//   Bagher               cook-torrance-sgd (if built)    ks = 4·albedo/π (seed 000 Eq. 1 vs seed 004 Eq. 1)
+//   LowMicrofacetFit     unsupported (the Löw microfacet model is not in the catalogue)
+// plus the Lambertian albedo → kd everywhere. Values are loaded as published, even where a
+// fitting bound of the model is narrower (one Cook-Torrance roughness is 2.09 > 2).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "brdfkit/models/model.h"
+
+namespace brdfkit {
+
+class PublishedFits {
+ public:
+  // Parses one file; throws InputError naming the file (unreadable, not JSON, no `materials`).
+  static PublishedFits read(const std::filesystem::path& file);
+
+  const std::filesystem::path& file() const { return file_; }
+  std::string stem() const { return file_.stem().string(); }
+  // Material names, sorted.
+  std::vector<std::string> materials() const;
+  // The brdfkit model this file's lobes map to, or empty when unsupported.
+  std::string model_name() const { return model_; }
+  bool supported() const { return !model_.empty(); }
+  // Why the file cannot be loaded into a model (empty when supported).
+  const std::string& unsupported_reason() const { return reason_; }
+  // The fit of `material`; throws InputError for an unknown material, a missing or malformed
+  // field (named in the message), or an unsupported file.
+  Brdf brdf(const std::string& material) const;
+
+ private:
+  std::filesystem::path file_;
+  nlohmann::json materials_;
+  std::string lobe_;    // the specular lobe's name in the file
+  std::string model_;   // brdfkit model name, empty if unsupported
+  std::string reason_;
+};
+
+// The *.json files of a published-fits folder, sorted by name.
+std::vector<std::filesystem::path> published_fit_files(const std::filesystem::path& dir);
+
+// Löw 2012's Cook-Torrance as their published fits define it: Beckmann D, Cook-Torrance
+// dielectric F(η), V-groove G (DESIGN.md §4–6); registered as `cook-torrance-low2012`.
+const Model* low_cook_torrance_model();
+
+}  // namespace brdfkit

@@ -1,0 +1,107 @@
+#include "brdfkit/shadowing/bagher_g1.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "brdfkit/core/error.h"
+
+namespace brdfkit {
+
+namespace {
+
+// G1 of seed 000 Eq. 9 in the parameters (log λ, w, log k), w = π/2 − θ0:
+// c = log(1 + 1/λ)/w^k turns exp(c (θ − θ0)^k) into (1 + 1/λ)^(((θ − θ0)/w)^k).
+template <class T> T g1_reparam(const T& log_lambda, const T& w, const T& log_k, double theta) {
+  using std::exp;
+  using std::log;
+  using std::pow;
+  const T theta0 = T(kPi / 2) - w;
+  if (!(T(theta) > theta0)) return T(1);
+  const T lambda = exp(log_lambda);
+  const T y = pow((T(theta) - theta0) / w, exp(log_k));
+  return T(1) + lambda * (T(1) - exp(y * log(T(1) + T(1) / lambda)));
+}
+
+struct Residual {
+  double theta, target;
+  template <class T> bool operator()(const T* x, T* r) const {
+    r[0] = g1_reparam(x[0], x[1], x[2], theta) - T(target);
+    return true;
+  }
+};
+
+double sum_sq(const double* x, std::span<const double> theta, std::span<const double> g1) {
+  double s = 0;
+  for (size_t j = 0; j < theta.size(); ++j) {
+    const double r = g1_reparam(x[0], x[1], x[2], theta[j]) - g1[j];
+    s += r * r;
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<double> bagher_g1_angles(int n) {
+  std::vector<double> t(size_t(std::max(n, 0)));
+  for (int j = 0; j < n; ++j) t[size_t(j)] = (j + 0.5) * (kPi / 2) / n;
+  return t;
+}
+
+BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double> g1) {
+  if (theta.empty()) throw InputError("fit_bagher_g1", "no angles to fit");
+  if (theta.size() != g1.size()) throw InputError("fit_bagher_g1", "angles and G1 values differ in count");
+  for (size_t j = 0; j < theta.size(); ++j)
+    if (!std::isfinite(theta[j]) || !std::isfinite(g1[j]))
+      throw InputError("fit_bagher_g1", "non-finite angle or G1 value at index " + std::to_string(j));
+
+  // Where G1 starts to drop sets the scale of w = π/2 − θ0 for the starts.
+  double theta_drop = kPi / 2;
+  for (size_t j = 0; j < theta.size(); ++j)
+    if (g1[j] < 1.0 - 1e-4) theta_drop = std::min(theta_drop, theta[j]);
+  const double w_drop = std::max(1e-3, kPi / 2 - theta_drop);
+
+  double best[3] = {0, w_drop, std::log(2.0)};
+  double best_ss = std::numeric_limits<double>::infinity();
+  for (double lam0 : {0.3, 2.0, 20.0})
+    for (double k0 : {1.5, 4.0, 20.0})
+      for (double wf : {1.2, 2.0}) {
+        double x[3] = {std::log(lam0), wf * w_drop, std::log(k0)};
+        ceres::Problem problem;
+        for (size_t j = 0; j < theta.size(); ++j)
+          problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, 3>(new Residual{theta[j], g1[j]}),
+                                   nullptr, x);
+        problem.SetParameterLowerBound(x, 0, std::log(1e-8));
+        problem.SetParameterUpperBound(x, 0, std::log(1e8));
+        problem.SetParameterLowerBound(x, 1, 1e-6);
+        problem.SetParameterUpperBound(x, 1, 4.0);
+        problem.SetParameterLowerBound(x, 2, std::log(0.2));
+        problem.SetParameterUpperBound(x, 2, std::log(2000.0));
+        ceres::Solver::Options options;
+        options.linear_solver_type = ceres::DENSE_QR;
+        options.max_num_iterations = 400;
+        options.function_tolerance = 1e-15;
+        options.parameter_tolerance = 1e-14;
+        options.gradient_tolerance = 1e-16;
+        options.logging_type = ceres::SILENT;
+        ceres::Solver::Summary summary;
+        ceres::Solve(options, &problem, &summary);
+        const double ss = sum_sq(x, theta, g1);
+        if (std::isfinite(ss) && ss < best_ss) {
+          best_ss = ss;
+          std::copy(x, x + 3, best);
+        }
+      }
+  BagherG1Fit fit;
+  fit.lambda = std::exp(best[0]);
+  fit.k = std::exp(best[2]);
+  fit.theta0 = kPi / 2 - best[1];
+  fit.c = std::log1p(1.0 / fit.lambda) / std::pow(best[1], fit.k);
+  fit.n = static_cast<int>(theta.size());
+  fit.sum_sq = best_ss;
+  fit.rms = std::sqrt(best_ss / fit.n);
+  return fit;
+}
+
+}  // namespace brdfkit
