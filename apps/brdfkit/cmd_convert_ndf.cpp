@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -27,8 +26,8 @@ constexpr const char* kDomainRule =
 
 struct Options {
   std::string from, to, method = "rmse";
-  std::optional<double> value;
-  std::vector<double> table;
+  std::vector<double> values;  // VALUE, or with --table the m_B values
+  bool table = false;
   bool json = false;
 };
 
@@ -45,7 +44,7 @@ nlohmann::json domain_json(const RmseDomain& d) {
 
 int run_table(const Options& o) {
   const auto& beckmann = ndf_shape("beckmann");
-  const std::vector<double> m_Bs = o.table.empty() ? table2_m_B() : o.table;
+  const std::vector<double> m_Bs = o.values.empty() ? table2_m_B() : o.values;
   for (double m : m_Bs) check_param(beckmann, m, "--table");
   std::vector<Table2Row> rows;
   for (double m : m_Bs) rows.push_back(table2_row(m));
@@ -79,9 +78,10 @@ int run_table(const Options& o) {
 int run_convert(const Options& o) {
   if (o.from.empty()) throw InputError("--from", "missing: name the source distribution (or use --table)");
   if (o.to.empty()) throw InputError("--to", "missing: name the target distribution (or use --table)");
-  if (!o.value) throw InputError("VALUE", "missing: give the source distribution's parameter value");
+  if (o.values.empty()) throw InputError("VALUE", "missing: give the source distribution's parameter value");
+  if (o.values.size() > 1) throw InputError("VALUE", "give one value (several m_B values go with --table)");
   const Method method = parse_method(o.method);
-  const Conversion c = convert_ndf(o.from, o.to, *o.value, method);
+  const Conversion c = convert_ndf(o.from, o.to, o.values[0], method);
   for (const auto& w : c.warnings) std::cerr << "brdfkit: warning: " << w << "\n";
   if (o.json) {
     nlohmann::json out = {
@@ -115,24 +115,22 @@ const CommandRegistration reg("convert-ndf", [](CLI::App& app) {
   for (const auto& s : ndf_shapes()) names += fmt::format("\n  {:<18}{:<7}{}", s.name, s.symbol, s.description);
   sub->add_option("--from", o->from, "Source distribution");
   sub->add_option("--to", o->to, "Target distribution");
-  sub->add_option("value", o->value, "The source distribution's parameter value");
+  sub->add_option("value", o->values, "The source distribution's parameter value (with --table: the m_B values)");
   sub->add_option("--method", o->method,
                   "half-max: equal beta_half, where D/D(0) = 1/2 (seed 001 Eq. 3-10); sawicki: the paper's fitted "
                   "formulas (Eq. 12-15, Tables 3-4; falls back to rmse with a warning outside m_B in [0.0044, "
                   "0.4473] or for pairs it does not cover); rmse: least RMSE between the D/D(0) shapes (default)")
       ->capture_default_str();
-  sub->add_option("--table", o->table,
-                  "Print seed 001 Table 2's layout for these m_B values (default: the 17 of the paper)")
-      ->expected(0, std::numeric_limits<int>::max());
+  sub->add_flag("--table", o->table,
+                "Print seed 001 Table 2's layout for the m_B values given as VALUE (default: the 17 of the paper)");
   sub->add_flag("--json", o->json, "Print JSON instead of text");
   sub->footer(fmt::format("Distributions (parameter names of seed 001):{}\n\nRMSE domain: {}, {} samples. "
                           "Shapes are compared peak-normalized, D/D(0), never as normalized D.",
                           names, kDomainRule, kRmseSamples));
-  auto* table_opt = sub->get_option("--table");
-  return [o, table_opt]() {
-    if (table_opt->count() > 0) {
-      if (!o->from.empty() || !o->to.empty() || o->value)
-        throw InputError("--table", "takes m_B values only; leave out --from, --to and VALUE");
+  return [o]() {
+    if (o->table) {
+      if (!o->from.empty() || !o->to.empty())
+        throw InputError("--table", "takes m_B values only; leave out --from and --to");
       return run_table(*o);
     }
     return run_convert(*o);

@@ -42,7 +42,7 @@ template <class T> struct TestSgd {
 namespace brdfkit {
 template <> struct SmithShape<test::TestSgd> {
   static constexpr int kDims = 2;
-  static std::vector<SmithAxis> axes() { return {{1e-5, 1.0, 31, true}, {0.0, 1.8, 19, false}}; }
+  static std::vector<SmithAxis> axes() { return {{1e-5, 1.0, 41, true}, {-0.15, 1.8, 27, false}}; }
   template <class T> static std::array<T, 2> values(const test::TestSgd<T>& d) { return {d.alpha, d.p}; }
 };
 }  // namespace brdfkit

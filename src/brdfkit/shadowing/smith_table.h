@@ -35,7 +35,7 @@ class SmithLambdaTable {
  public:
   static constexpr int kMaxDims = 3;
   // Grid in v = log t − log t½ and its spacing (accuracy target ~1e-5 on G1, DESIGN.md §4).
-  static constexpr double kVLo = -8.0, kVHi = 10.0, kVStep = 0.05;
+  static constexpr double kVLo = -6.0, kVHi = 6.0, kVStep = 0.075;
 
   // lambda(params, t) must return Λ for the parameter values `params` (in axes order) and t = tanθ.
   SmithLambdaTable(std::vector<SmithAxis> axes, const std::function<double(const double*, double)>& lambda);
