@@ -146,7 +146,7 @@ TEST(CookTorrance, JetsMatchDoublesAndFiniteDifferences) {
           std::vector<J> pj(n);
           for (size_t k = 0; k < n; ++k) pj[k] = J(p[k]);
           pj[i].v[0] = 1;
-          const J v = M::template eval<J>(pj.data(), 1, wi.cast<J>(), wo.cast<J>());
+          const J v = M::template eval<J>(pj.data(), 1, wi.template cast<J>(), wo.template cast<J>());
           ASSERT_NEAR(v.a, f, 1e-14 * std::abs(f)) << M::name();
           auto at = [&](double dx) {
             std::vector<double> q = p;

@@ -2,8 +2,8 @@
 // Shifted gamma distribution written inline for the shadowing tests, independent of ndf/sgd.h:
 // P22(x) = α^{p−1}/Γ(1−p, α) · exp(−(α² + x)/α) / (α² + x)^p / π (seed 000 §4.2, DESIGN.md §3),
 // with Γ(s, α) for s = 1 − p ≤ 0 by one step of Γ(s, x) = (Γ(s+1, x) − xˢ e⁻ˣ)/s and Γ(0, x) = E1(x).
-// The normalization is a double (computed from the scalar parts): the tests differentiate Λ through
-// the table, whose nodes are built in double.
+// The normalization is a double (computed from the scalar parts). It has no SmithShape, so its Λ is
+// the direct integral: the reference for ndf/sgd.h's table.
 #include <boost/math/special_functions/expint.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 
@@ -39,10 +39,3 @@ template <class T> struct TestSgd {
 
 }  // namespace brdfkit::test
 
-namespace brdfkit {
-template <> struct SmithShape<test::TestSgd> {
-  static constexpr int kDims = 2;
-  static std::vector<SmithAxis> axes() { return {{1e-5, 1.0, 41, true}, {-0.15, 1.8, 27, false}}; }
-  template <class T> static std::array<T, 2> values(const test::TestSgd<T>& d) { return {d.alpha, d.p}; }
-};
-}  // namespace brdfkit

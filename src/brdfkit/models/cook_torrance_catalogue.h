@@ -11,6 +11,7 @@
 
 #include "brdfkit/fresnel/schlick.h"
 #include "brdfkit/models/cook_torrance.h"
+#include "brdfkit/models/cook_torrance_models.h"
 #include "brdfkit/models/model.h"
 #include "brdfkit/models/named_model.h"
 #include "brdfkit/ndf/beckmann.h"
@@ -53,18 +54,5 @@ using CookTorranceCatalogue =
     std::tuple<CookTorranceNgan, CookTorranceBeckmann, CookTorranceBlinnPhong, CookTorranceGaussian, CookTorranceGgx,
                CookTorranceGtr, CookTorranceExponential, CookTorranceSgd, CookTorranceExponentialPower,
                CookTorranceSchlickRational, CookTorranceSawickiRational>;
-
-// The runtime instances registry.cpp lists (MicrofacetModelAdapter of the types above).
-const Model* cook_torrance_ngan_model();
-const Model* cook_torrance_beckmann_model();
-const Model* cook_torrance_blinn_phong_model();
-const Model* cook_torrance_gaussian_model();
-const Model* cook_torrance_ggx_model();
-const Model* cook_torrance_gtr_model();
-const Model* cook_torrance_exponential_model();
-const Model* cook_torrance_sgd_model();
-const Model* cook_torrance_exponential_power_model();
-const Model* cook_torrance_schlick_rational_model();
-const Model* cook_torrance_sawicki_rational_model();
 
 }  // namespace brdfkit

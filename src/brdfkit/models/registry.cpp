@@ -2,7 +2,7 @@
 #include <string>
 
 #include "brdfkit/core/error.h"
-#include "brdfkit/models/cook_torrance_catalogue.h"
+#include "brdfkit/models/cook_torrance_models.h"
 #include "brdfkit/models/ashikhmin_shirley.h"
 #include "brdfkit/models/blinn_phong_lobe.h"
 #include "brdfkit/models/lafortune.h"

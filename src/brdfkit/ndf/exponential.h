@@ -1,7 +1,7 @@
 #pragma once
 // Exponential distribution: P22(x) = exp(−sqrt(x/α²)) / (2π α²), x = tan²θ
 // (seed 000 Table 1, DESIGN.md §3). Interface: see beckmann.h.
-#include <boost/math/special_functions/gamma.hpp>
+#include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
 #include <type_traits>
 
@@ -34,13 +34,13 @@ template <class T> struct Exponential {
   // No closed form Λ in the seeds.
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
-  // With s = tanθ/α the slope CDF is 1 − (1+s)e⁻ˢ, the Gamma(2) CDF: s = P⁻¹(2, u).
+  // With s = tanθ/α the slope CDF is 1 − (1+s)e⁻ˢ (the Gamma(2) CDF): (1+s)e⁻ˢ = 1−u = q
+  // inverts through the lower Lambert branch, s = −1 − W₋₁(−q/e).
   Vec3d sample(const Vec2d& u) const
     requires std::is_same_v<T, double>
   {
-    // Q⁻¹(2, 1−u) keeps the tail accurate as u → 1; u = 1 would be s = ∞ (θ = π/2).
-    const double q = 1.0 - u.x();
-    const double s = q > 0.0 ? boost::math::gamma_q_inv(2.0, q) : 1e300;
+    const double q = 1.0 - u.x();  // u = 1 would be s = ∞ (θ = π/2)
+    const double s = q > 0.0 ? -1.0 - boost::math::lambert_wm1(-q * std::exp(-1.0)) : 1e300;
     const double theta = std::atan(alpha * s);
     const double phi = 2 * kPi * u.y();
     return Vec3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));

@@ -52,7 +52,8 @@ template <class T> struct Sgd {
   // No closed form (seed 000 §4.3: Λ involves the confluent hypergeometric U).
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
-  // Exact inversion of Fθ = 1 − Γ(1−p, α + tan²θ/α)/Γ(1−p, α) (seed 000 §4.5) by toms748.
+  // Exact inversion of Fθ = 1 − Γ(1−p, α + tan²θ/α)/Γ(1−p, α) (seed 000 §4.5): Boost's
+  // gamma_q_inv for 1−p > 0, toms748 root finding on Γ for 1−p ≤ 0 (no regularized form).
   Vec3d sample(const Vec2d& u) const
     requires std::is_same_v<T, double>;
   double pdf(const Vec3d& m) const
@@ -69,7 +70,7 @@ template <class T> struct Sgd {
     requires std::is_same_v<T, double>;
 };
 
-// Inverse of Fθ by root finding on t ∈ [α, ∞): Γ(s, t) = (1−u) Γ(s, α), s = 1−p.
+// Inverse of Fθ: t ∈ [α, ∞) with Γ(s, t) = (1−u) Γ(s, α), s = 1−p; tan²θ = α (t − α).
 Vec3d sgd_sample(double alpha, double p, const Vec2d& u);
 
 template <class T>

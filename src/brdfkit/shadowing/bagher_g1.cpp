@@ -62,37 +62,57 @@ BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double>
     if (g1[j] < 1.0 - 1e-4) theta_drop = std::min(theta_drop, theta[j]);
   const double w_drop = std::max(1e-3, kPi / 2 - theta_drop);
 
+  // Global search first: the sum of squares has separate basins (small λ with k ≈ 1–3, large λ
+  // with k ≈ 10–50 and θ0 < 0, both seen in the published fits), so a coarse grid over
+  // (log λ, w, log k) picks the starts and Levenberg-Marquardt polishes the best few.
+  struct Start {
+    double ss;
+    double x[3];
+  };
+  std::vector<Start> grid;
+  for (int a = 0; a <= 14; ++a)
+    for (int b = 0; b <= 8; ++b)
+      for (int c = 0; c <= 14; ++c) {
+        Start st;
+        st.x[0] = std::log(1e-4) + a * (std::log(1e3) - std::log(1e-4)) / 14;
+        st.x[1] = std::min(4.0, w_drop * std::pow(4.0 / w_drop, b / 8.0));
+        st.x[2] = std::log(0.5) + c * (std::log(500.0) - std::log(0.5)) / 14;
+        st.ss = sum_sq(st.x, theta, g1);
+        if (std::isfinite(st.ss)) grid.push_back(st);
+      }
+  const size_t n_starts = std::min<size_t>(6, grid.size());
+  std::partial_sort(grid.begin(), grid.begin() + n_starts, grid.end(),
+                    [](const Start& l, const Start& r) { return l.ss < r.ss; });
+
   double best[3] = {0, w_drop, std::log(2.0)};
   double best_ss = std::numeric_limits<double>::infinity();
-  for (double lam0 : {0.3, 2.0, 20.0})
-    for (double k0 : {1.5, 4.0, 20.0})
-      for (double wf : {1.2, 2.0}) {
-        double x[3] = {std::log(lam0), wf * w_drop, std::log(k0)};
-        ceres::Problem problem;
-        for (size_t j = 0; j < theta.size(); ++j)
-          problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, 3>(new Residual{theta[j], g1[j]}),
-                                   nullptr, x);
-        problem.SetParameterLowerBound(x, 0, std::log(1e-8));
-        problem.SetParameterUpperBound(x, 0, std::log(1e8));
-        problem.SetParameterLowerBound(x, 1, 1e-6);
-        problem.SetParameterUpperBound(x, 1, 4.0);
-        problem.SetParameterLowerBound(x, 2, std::log(0.2));
-        problem.SetParameterUpperBound(x, 2, std::log(2000.0));
-        ceres::Solver::Options options;
-        options.linear_solver_type = ceres::DENSE_QR;
-        options.max_num_iterations = 400;
-        options.function_tolerance = 1e-15;
-        options.parameter_tolerance = 1e-14;
-        options.gradient_tolerance = 1e-16;
-        options.logging_type = ceres::SILENT;
-        ceres::Solver::Summary summary;
-        ceres::Solve(options, &problem, &summary);
-        const double ss = sum_sq(x, theta, g1);
-        if (std::isfinite(ss) && ss < best_ss) {
-          best_ss = ss;
-          std::copy(x, x + 3, best);
-        }
-      }
+  for (size_t s0 = 0; s0 < n_starts; ++s0) {
+    double x[3] = {grid[s0].x[0], grid[s0].x[1], grid[s0].x[2]};
+    ceres::Problem problem;
+    for (size_t j = 0; j < theta.size(); ++j)
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, 3>(new Residual{theta[j], g1[j]}), nullptr,
+                               x);
+    problem.SetParameterLowerBound(x, 0, std::log(1e-8));
+    problem.SetParameterUpperBound(x, 0, std::log(1e8));
+    problem.SetParameterLowerBound(x, 1, 1e-6);
+    problem.SetParameterUpperBound(x, 1, 4.0);
+    problem.SetParameterLowerBound(x, 2, std::log(0.2));
+    problem.SetParameterUpperBound(x, 2, std::log(2000.0));
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.max_num_iterations = 500;
+    options.function_tolerance = 1e-16;
+    options.parameter_tolerance = 1e-15;
+    options.gradient_tolerance = 1e-20;
+    options.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    const double ss = sum_sq(x, theta, g1);
+    if (std::isfinite(ss) && ss < best_ss) {
+      best_ss = ss;
+      std::copy(x, x + 3, best);
+    }
+  }
   BagherG1Fit fit;
   fit.lambda = std::exp(best[0]);
   fit.k = std::exp(best[2]);

@@ -50,7 +50,8 @@ std::vector<double> bagher_g1_angles(int n = 120);
 
 // Least-squares fit of (λ, c, k) to target values g1[j] at angles theta[j] (radians in [0, π/2]).
 // Internally parameterized by (log λ, w = π/2 − θ0, log k), where G1 = 1 + λ(1 − (1 + 1/λ)^(((θ−θ0)/w)^k))
-// is the same function with well-conditioned parameters; several starts, the best kept.
+// is the same function with well-conditioned parameters; a coarse grid search picks the starts of
+// Levenberg-Marquardt (Ceres, automatic derivatives), the best result is kept.
 // Throws InputError on empty or mismatched input.
 BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double> g1);
 

@@ -79,17 +79,25 @@ template <class Ndf, class T> T smith_lambda_integral(const Ndf& ndf, const T& t
   using Rule = boost::math::quadrature::gauss<double, sd::kGaussPoints>;
   const auto& xs = Rule::abscissa();
   const auto& ws = Rule::weights();
+  // log of an edge value, floored at the cut, to measure how steep a panel is.
+  auto log_edge = [&](int j) { return std::log(std::max(edge[j], cut)); };
   T sum(0);
   for (int j = 0; j < n_panels; ++j) {
     // A panel next to an active one is integrated too: a feature narrower than the scan step
     // between two negligible edge values would otherwise be lost.
     if (!(active(j) || active(j - 1) || active(j + 1))) continue;
-    const double a = w_lo + j * sd::kPanelWidth, half = 0.5 * sd::kPanelWidth, mid = a + half;
-    for (size_t i = 0; i < xs.size(); ++i) {
-      if (xs[i] == 0.0) {
-        sum += g(mid) * T(ws[i] * half);
-      } else {
-        sum += (g(mid + half * xs[i]) + g(mid - half * xs[i])) * T(ws[i] * half);
+    // Steep panels (sharp cut-offs such as exp(−x^p) with large p, a step of width ~1/(2p) in w)
+    // are split so that each piece spans at most a factor e⁴ of the integrand.
+    const int pieces = std::clamp(static_cast<int>(std::ceil(std::abs(log_edge(j + 1) - log_edge(j)) / 4.0)), 1, 32);
+    const double width = sd::kPanelWidth / pieces, half = 0.5 * width;
+    for (int piece = 0; piece < pieces; ++piece) {
+      const double mid = w_lo + j * sd::kPanelWidth + (piece + 0.5) * width;
+      for (size_t i = 0; i < xs.size(); ++i) {
+        if (xs[i] == 0.0) {
+          sum += g(mid) * T(ws[i] * half);
+        } else {
+          sum += (g(mid + half * xs[i]) + g(mid - half * xs[i])) * T(ws[i] * half);
+        }
       }
     }
   }

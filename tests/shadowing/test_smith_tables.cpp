@@ -1,0 +1,89 @@
+// The Λ tables of ndf/'s distributions without a closed form, against the direct integral of the
+// same P22 (DESIGN.md §4, target ~1e-5 on G1); each prints the max |ΔG1| it measured.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "brdfkit/ndf/exponential.h"
+#include "brdfkit/ndf/exponential_power.h"
+#include "brdfkit/ndf/gaussian.h"
+#include "brdfkit/ndf/gtr.h"
+#include "brdfkit/ndf/sgd.h"
+#include "brdfkit/shadowing/smith.h"
+
+namespace brdfkit {
+namespace {
+
+// Max |ΔG1| over random parameters (log-uniform where the table axis is logarithmic) inside the
+// distribution's params() bounds and θ ∈ [0, 89.9°].
+template <template <class> class Ndf> double table_error(int n, uint64_t seed) {
+  const ParamTable table = Ndf<double>::params();
+  const auto axes = SmithShape<Ndf>::axes();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst = 0;
+  std::vector<double> worst_p;
+  double worst_th = 0;
+  for (int i = 0; i < n; ++i) {
+    std::vector<double> p(table.size());
+    for (size_t k = 0; k < table.size(); ++k) {
+      const double lo = table[k].lower, hi = table[k].upper;
+      p[k] = axes[k].log_scale ? lo * std::pow(hi / lo, u(rng)) : lo + (hi - lo) * u(rng);
+    }
+    const double th = 89.9 * kPi / 180 * std::sqrt(u(rng));
+    const Ndf<double> ndf(p.data());
+    const double t = std::tan(th);
+    const double e = std::abs(1 / (1 + ndf.Lambda(t)) - 1 / (1 + smith_lambda_integral(ndf, t)));
+    if (e > worst) {
+      worst = e;
+      worst_p = p;
+      worst_th = th;
+    }
+  }
+  std::printf("  max |dG1| %.3g at params (", worst);
+  for (double v : worst_p) std::printf(" %.4g", v);
+  std::printf(" ) theta %.4f\n", worst_th);
+  return worst;
+}
+
+template <template <class> class Ndf> void expect_box_covers_bounds() {
+  const ParamTable table = Ndf<double>::params();
+  const auto axes = SmithShape<Ndf>::axes();
+  ASSERT_EQ(table.size(), axes.size());
+  for (size_t k = 0; k < table.size(); ++k) {
+    EXPECT_LE(axes[k].lo, table[k].lower) << table[k].name;
+    EXPECT_GE(axes[k].hi, table[k].upper) << table[k].name;
+  }
+}
+
+TEST(SmithTables, BoxesCoverParameterBounds) {
+  expect_box_covers_bounds<Sgd>();
+  expect_box_covers_bounds<ExponentialPower>();
+  expect_box_covers_bounds<Gtr>();
+  expect_box_covers_bounds<Exponential>();
+  expect_box_covers_bounds<Gaussian>();
+}
+
+TEST(SmithTables, Exponential) {
+  std::printf("exponential:\n");
+  EXPECT_LT(table_error<Exponential>(1000, 1), 1e-5);
+}
+
+TEST(SmithTables, Gaussian) {
+  std::printf("gaussian:\n");
+  EXPECT_LT(table_error<Gaussian>(1000, 2), 1e-5);
+}
+
+TEST(SmithTables, ExponentialPower) {
+  std::printf("exponential power:\n");
+  EXPECT_LT(table_error<ExponentialPower>(2000, 3), 1e-5);
+}
+
+TEST(SmithTables, Gtr) {
+  std::printf("GTR:\n");
+  EXPECT_LT(table_error<Gtr>(2000, 4), 1e-5);
+}
+
+}  // namespace
+}  // namespace brdfkit
