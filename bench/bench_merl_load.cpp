@@ -23,7 +23,7 @@ const std::filesystem::path kFile = std::filesystem::temp_directory_path() / "br
 // A full-size file with the shape of a real material (Lambert + a Beckmann-like lobe).
 void ensure_file() {
   if (std::filesystem::exists(kFile) && std::filesystem::file_size(kFile) == merl::kFileBytes) return;
-  merl::write(kFile, merl::tabulate([](const Vec3d& wi, const Vec3d& wo) {
+  merl::write(kFile, merl::tabulate([](const Vec3d& wi, const Vec3d& wo) -> Rgb {
                 const Vec3d h = (wi + wo).normalized();
                 const double t2 = (1 - h.z() * h.z()) / (h.z() * h.z()), a2 = 0.04;
                 const double d = std::exp(-t2 / a2) / (kPi * a2 * std::pow(h.z(), 4));

@@ -7,6 +7,8 @@
 #include "brdfkit/measured/albedo.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/measured/merl_tabulate.h"
+#include "brdfkit/measured/rgl_tensor.h"
+#include "brdfkit/measured/summary.h"
 #include "test_util.h"
 
 using namespace brdfkit;
@@ -51,14 +53,14 @@ double ggx_albedo_midpoint(double theta_i) {
 TEST(Albedo, AnalyticLambertian) {
   for (int deg = 0; deg <= 85; deg += 5) {
     const DirectionalAlbedo a =
-        directional_albedo([](const Vec3d&, const Vec3d&) { return Rgb::Constant(0.5 * kInvPi); }, deg * kDeg);
+        directional_albedo([](const Vec3d&, const Vec3d&) -> Rgb { return Rgb::Constant(0.5 * kInvPi); }, deg * kDeg);
     EXPECT_NEAR(a.value[0], 0.5, 2e-4) << deg;
     EXPECT_EQ(a.missing_fraction, 0.0);
   }
 }
 
 TEST(Albedo, TabulatedLambertianIsHalfAtEveryAngle) {
-  const MerlBrdf brdf(merl::tabulate([](const Vec3d&, const Vec3d&) { return Rgb::Constant(0.5 * kInvPi); }),
+  const MerlBrdf brdf(merl::tabulate([](const Vec3d&, const Vec3d&) -> Rgb { return Rgb::Constant(0.5 * kInvPi); }),
                       "lambert-0.5");
   for (int deg = 0; deg <= 80; deg += 10) {
     const auto a = directional_albedo(brdf, deg * kDeg);
@@ -70,13 +72,13 @@ TEST(Albedo, TabulatedLambertianIsHalfAtEveryAngle) {
 }
 
 TEST(Albedo, TabulatedGgxMatchesIndependentIntegral) {
-  const MerlBrdf brdf(merl::tabulate([](const Vec3d& wi, const Vec3d& wo) { return Rgb::Constant(ggx(wi, wo)); }),
+  const MerlBrdf brdf(merl::tabulate([](const Vec3d& wi, const Vec3d& wo) -> Rgb { return Rgb::Constant(ggx(wi, wo)); }),
                       "ggx-0.3");
   for (int deg = 0; deg <= 80; deg += 10) {
     const double ref = ggx_albedo_midpoint(deg * kDeg);
     const auto tab = directional_albedo(brdf, deg * kDeg);
     const DirectionalAlbedo ana =
-        directional_albedo([](const Vec3d& wi, const Vec3d& wo) { return Rgb::Constant(ggx(wi, wo)); }, deg * kDeg);
+        directional_albedo([](const Vec3d& wi, const Vec3d& wo) -> Rgb { return Rgb::Constant(ggx(wi, wo)); }, deg * kDeg);
     ASSERT_TRUE(tab.has_value());
     std::printf("theta_i %2d: midpoint %.5f  quadrature of the model %.5f  of the MERL table %.5f (%+.3f %%), "
                 "missing %.3f %%\n",
@@ -86,14 +88,15 @@ TEST(Albedo, TabulatedGgxMatchesIndependentIntegral) {
   }
 }
 
-// Half of the table not measured (φd ≥ 90°): the albedo covers the rest, and the missing share
+// Every other θh row not measured (odd iθh; not a φd range: at θi = 0 every pair has φd = 0 or π):
+// the albedo covers the rest, and the missing share
 // is reported: albedo + missing·0.5 ≈ 0.5 for a Lambertian 0.5/π.
 TEST(Albedo, ReportsCellsNotMeasured) {
-  merl::Table t = merl::tabulate([](const Vec3d&, const Vec3d&) { return Rgb::Constant(0.5 * kInvPi); });
+  merl::Table t = merl::tabulate([](const Vec3d&, const Vec3d&) -> Rgb { return Rgb::Constant(0.5 * kInvPi); });
   for (size_t k = 0; k < merl::kCellCount; ++k)
-    if (merl::cell_at(k).phi_d >= 90) t.set_raw(k, -1, -1, -1);
+    if (merl::cell_at(k).theta_h % 2 == 1) t.set_raw(k, -1, -1, -1);
   const MerlBrdf brdf(std::move(t), "half");
-  for (int deg : {0, 40, 70}) {
+  for (int deg : {0, 40, 80}) {
     const auto a = directional_albedo(brdf, deg * kDeg);
     ASSERT_TRUE(a.has_value());
     std::printf("theta_i %2d: albedo %.4f missing %.4f\n", deg, a->value[0], a->missing_fraction);
@@ -115,3 +118,21 @@ struct Nowhere final : MeasuredBrdf {
 }  // namespace
 
 TEST(Albedo, NoValueWhenTheDataAnswerNowhere) { EXPECT_FALSE(directional_albedo(Nowhere{}, 0.3).has_value()); }
+
+// On real RGL measurements the half-vector quadrature of eval() agrees with RglBrdf::albedo, an
+// independent rule (midpoint in the unit square of the VNDF warp, measured/rgl_tensor.h).
+TEST(Albedo, RglAgreesWithWarpedMidpointRule) {
+  BRDFKIT_REQUIRE_DATA("rgl");
+  for (const char* name : {"paper_white_rgb.bsdf", "satin_rosaline_rgb.bsdf", "vch_golden_yellow_rgb.bsdf"}) {
+    const RglBrdf brdf(test::data_dir() / "rgl" / name);
+    for (int deg = 0; deg <= 80; deg += 20) {
+      const auto a = directional_albedo(brdf, deg * kDeg);
+      ASSERT_TRUE(a.has_value());
+      const Rgb ref = brdf.albedo(spherical_direction(deg * kDeg, 0.0));
+      std::printf("%s theta_i %2d: Y %.4f (half-vector quadrature) vs %.4f (warped midpoint)\n", name, deg,
+                  luminance(a->value), luminance(ref));
+      EXPECT_EQ(a->missing_fraction, 0.0);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(a->value[c] / ref[c], 1.0, 0.01) << name << " " << deg << " " << c;
+    }
+  }
+}

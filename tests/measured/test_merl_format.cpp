@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "brdfkit/core/error.h"
 #include "brdfkit/core/half_diff.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_brdf.h"
@@ -29,7 +30,7 @@ merl::Table offset_table() {
 
 // A smooth, non-symmetric test BRDF (values far from any scale factor's round numbers).
 Rgb wavy(const Vec3d& wi, const Vec3d& wo) {
-  const double base = 0.1 + 0.7 * wi.z() * wo.z() + 0.2 * std::sin(3 * wi.x() + 2 * wo.y());
+  const double base = 0.3 + 0.7 * wi.z() * wo.z() + 0.2 * std::sin(3 * wi.x() + 2 * wo.y());  // > 0
   return Rgb(base + 0.01, 2 * base + 0.3, 0.5 * base + 0.123456789);
 }
 
@@ -199,7 +200,7 @@ TEST(MerlTabulate, LookupAtCentresReturnsTabulatedValues) {
 TEST(MerlTabulate, DeterministicAndRejectsNonFinite) {
   const merl::Table a = merl::tabulate(wavy), b = merl::tabulate(wavy);
   EXPECT_EQ(std::memcmp(a.raw_data(), b.raw_data(), 3 * merl::kCellCount * sizeof(double)), 0);
-  EXPECT_THROW(merl::tabulate([](const Vec3d& wi, const Vec3d&) {
+  EXPECT_THROW(merl::tabulate([](const Vec3d& wi, const Vec3d&) -> Rgb {
                  return Rgb(wi.z() > 0.5 ? std::nan("") : 1.0, 1.0, 1.0);
                }),
                InputError);
@@ -281,7 +282,7 @@ TEST(MerlBrdf, SampleWeightsIntegrateThePairDomain) {
   double all = 0;
   for (size_t k = 0; k < merl::kCellCount; ++k) all += merl_cell_weight(merl::cell_at(k));
   EXPECT_NEAR(all, 8 * kPi * kPi, 1e-9);
-  const MerlBrdf brdf(merl::tabulate([](const Vec3d&, const Vec3d&) { return Rgb::Constant(kInvPi); }), "lambert");
+  const MerlBrdf brdf(merl::tabulate([](const Vec3d&, const Vec3d&) -> Rgb { return Rgb::Constant(kInvPi); }), "lambert");
   const SampleSet s = brdf.samples();
   EXPECT_EQ(s.size(), brdf.table().valid_count());
   double sum_w = 0, sum_cos = 0;

@@ -7,8 +7,6 @@
 
 #include "brdfkit/ndf/exponential.h"
 #include "brdfkit/ndf/exponential_power.h"
-#include "brdfkit/ndf/gaussian.h"
-#include "brdfkit/ndf/gtr.h"
 #include "brdfkit/ndf/sgd.h"
 #include "brdfkit/shadowing/smith.h"
 
@@ -60,9 +58,7 @@ template <template <class> class Ndf> void expect_box_covers_bounds() {
 TEST(SmithTables, BoxesCoverParameterBounds) {
   expect_box_covers_bounds<Sgd>();
   expect_box_covers_bounds<ExponentialPower>();
-  expect_box_covers_bounds<Gtr>();
   expect_box_covers_bounds<Exponential>();
-  expect_box_covers_bounds<Gaussian>();
 }
 
 TEST(SmithTables, Exponential) {
@@ -70,19 +66,9 @@ TEST(SmithTables, Exponential) {
   EXPECT_LT(table_error<Exponential>(1000, 1), 1e-5);
 }
 
-TEST(SmithTables, Gaussian) {
-  std::printf("gaussian:\n");
-  EXPECT_LT(table_error<Gaussian>(1000, 2), 1e-5);
-}
-
 TEST(SmithTables, ExponentialPower) {
   std::printf("exponential power:\n");
   EXPECT_LT(table_error<ExponentialPower>(2000, 3), 1e-5);
-}
-
-TEST(SmithTables, Gtr) {
-  std::printf("GTR:\n");
-  EXPECT_LT(table_error<Gtr>(2000, 4), 1e-5);
 }
 
 }  // namespace

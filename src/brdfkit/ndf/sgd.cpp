@@ -30,7 +30,7 @@ double solve_upper_gamma(double s, double x, double target) {
 
 Vec3d sgd_sample(double alpha, double p, const Vec2d& u) {
   const double s = 1.0 - p;
-  const double total = upper_gamma(s, alpha);
+  const double total = upper_gamma_cached(s, alpha);
   const double target = (1.0 - u.x()) * total;  // Γ(s, t) at the sample
   const double phi = 2 * kPi * u.y();
   if (!(target > 0.0)) return Vec3d(std::cos(phi), std::sin(phi), 0.0);  // u = 1: θ = π/2

@@ -25,7 +25,7 @@ template <class T> struct Sgd {
     return {{"alpha", 1e-6, 2.0, 0.05, Scope::Shared, false, "SGD alpha: slope and slope^2 scale (seed 000 Sec. 4.2)"},
             {"p", 0.0, 1.95, 0.5, Scope::Shared, false, "SGD shift exponent; 1-p > -1 needed by Gamma(1-p, alpha) (seed 000 Sec. 4.2)"}};
   }
-  explicit Sgd(const T* params) : alpha(params[0]), p(params[1]), K(T(1) / (alpha * upper_gamma(T(1) - p, alpha))) {}
+  explicit Sgd(const T* params) : alpha(params[0]), p(params[1]), K(T(1) / (alpha * upper_gamma<T>(T(1) - p, alpha))) {}
 
   // K e^{−t} t^{−p}/π, t = α + x/α: the published form, free of α^{p−1} over/underflow.
   T P22(const T& x) const {

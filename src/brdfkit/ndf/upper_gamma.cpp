@@ -53,6 +53,19 @@ double upper_gamma_ds(double s, double x) {
   return log_moment(1, s, x);
 }
 
+double upper_gamma_cached(double s, double x, double* ds) {
+  thread_local double last_s = NAN, last_x = NAN, last_value = 0.0, last_ds = NAN;
+  if (!(s == last_s && x == last_x)) {
+    last_value = upper_gamma(s, x);
+    last_s = s, last_x = x, last_ds = NAN;
+  }
+  if (ds) {
+    if (std::isnan(last_ds)) last_ds = upper_gamma_ds(s, x);
+    *ds = last_ds;
+  }
+  return last_value;
+}
+
 double upper_gamma_dx(double s, double x) {
   check_domain(s, x);
   return -std::pow(x, s - 1.0) * std::exp(-x);

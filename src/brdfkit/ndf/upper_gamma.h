@@ -13,13 +13,19 @@ double upper_gamma_ds(double s, double x);
 // ∂Γ/∂x = −x^{s−1} e^{−x} (fundamental theorem of calculus).
 double upper_gamma_dx(double s, double x);
 
+// Γ(s, x) and, when ds is not null, ∂Γ/∂s, memoized per thread on the last (s, x): models
+// construct their distribution at every evaluation with the same parameters.
+double upper_gamma_cached(double s, double x, double* ds = nullptr);
+
 // Γ(s, x) for double or ceres::Jet arguments.
 template <class T> T upper_gamma(const T& s, const T& x) {
   const double sv = value_of(s), xv = value_of(x);
   if constexpr (std::is_arithmetic_v<T>) {
-    return upper_gamma(sv, xv);
+    return upper_gamma_cached(sv, xv);
   } else {
-    return chain(upper_gamma(sv, xv), upper_gamma_ds(sv, xv), s, upper_gamma_dx(sv, xv), x);
+    double ds = 0.0;
+    const double g = upper_gamma_cached(sv, xv, &ds);
+    return chain(g, ds, s, upper_gamma_dx(sv, xv), x);
   }
 }
 

@@ -80,9 +80,16 @@ BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double>
         st.ss = sum_sq(st.x, theta, g1);
         if (std::isfinite(st.ss)) grid.push_back(st);
       }
-  const size_t n_starts = std::min<size_t>(6, grid.size());
-  std::partial_sort(grid.begin(), grid.begin() + n_starts, grid.end(),
+  const size_t n_grid = std::min<size_t>(6, grid.size());
+  std::partial_sort(grid.begin(), grid.begin() + n_grid, grid.end(),
                     [](const Start& l, const Start& r) { return l.ss < r.ss; });
+  grid.resize(n_grid);
+  // Plus fixed starts in both basins, scaled by where G1 starts to drop: neither set alone always
+  // finds the best minimum (sums differ up to 4× on published materials).
+  for (double lam0 : {0.3, 2.0, 20.0})
+    for (double k0 : {1.5, 4.0, 20.0})
+      for (double wf : {1.2, 2.0}) grid.push_back(Start{0, {std::log(lam0), std::min(4.0, wf * w_drop), std::log(k0)}});
+  const size_t n_starts = grid.size();
 
   double best[3] = {0, w_drop, std::log(2.0)};
   double best_ss = std::numeric_limits<double>::infinity();
