@@ -115,7 +115,7 @@ const CommandRegistration reg("convert-ndf", [](CLI::App& app) {
   for (const auto& s : ndf_shapes()) names += fmt::format("\n  {:<18}{:<7}{}", s.name, s.symbol, s.description);
   sub->add_option("--from", o->from, "Source distribution");
   sub->add_option("--to", o->to, "Target distribution");
-  sub->add_option("value", o->values, "The source distribution's parameter value (with --table: the m_B values)");
+  sub->add_option("VALUE", o->values, "The source distribution's parameter value (with --table: the m_B values)");
   sub->add_option("--method", o->method,
                   "half-max: equal beta_half, where D/D(0) = 1/2 (seed 001 Eq. 3-10); sawicki: the paper's fitted "
                   "formulas (Eq. 12-15, Tables 3-4; falls back to rmse with a warning outside m_B in [0.0044, "

@@ -161,7 +161,7 @@ void print_summary(const MeasuredSummary& s) {
   std::cout << fmt::format("  {:>8}{:>9}{:>9}{:>9}{:>9}{:>9}\n", "theta_i", "R", "G", "B", "Y", "missing");
   for (const AlbedoRow& r : s.albedo) {
     if (!r.albedo) {
-      std::cout << fmt::format("  {:>7.0f}°{:>9}\n", r.theta_i / kDeg, "-");
+      std::cout << fmt::format("  {:>7.0f}°{:>9}   (not in the data)\n", r.theta_i / kDeg, "-");
       continue;
     }
     const Rgb& a = r.albedo->value;
@@ -212,9 +212,10 @@ int run_info(const Options& opt) {
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
 
+  // The fallback's file is removed on return: say so wherever its path is shown.
+  if (src.kind == "tabulated") results[0]->path = "(temporary) " + results[0]->path;
   nlohmann::json files = nlohmann::json::array();
   for (const auto& r : results) files.push_back(summary_json(*r));
-  if (src.kind == "tabulated") files[0]["path"] = "(temporary) " + files[0]["path"].get<std::string>();
   const nlohmann::json doc = {{"program", "brdfkit"},
                               {"version", BRDFKIT_VERSION},
                               {"command", "info"},
@@ -239,7 +240,7 @@ const CommandRegistration reg("info", [](CLI::App& app) {
   sub->add_option("files", opt->files,
                   "Measured files (MERL .binary, RGL .bsdf, Cornell .brdf, ALTA .alta); none: the default data");
   sub->add_flag("--json", opt->json, "Print JSON instead of tables");
-  sub->add_option("--jobs", opt->jobs, "Files processed in parallel at most (default: all cores)")
+  sub->add_option("--jobs", opt->jobs, "Threads at most; files and albedo angles run in parallel (default: all cores)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--data", opt->data, "Data folder used when no FILE is given (its rgl/, cornell/, merl-slices/)")
       ->capture_default_str();

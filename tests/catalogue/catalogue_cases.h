@@ -31,7 +31,9 @@ inline std::vector<ModelCase> moderate_cases() {
       {"ward-duer", "a0.15", {{"kd", 0.2}, {"ks", 0.3}, {"alpha", 0.15}}},
       {"blinn-phong", "N40", {{"kd", 0.3}, {"ks", 0.4}, {"N", 40}}},
       {"blinn-phong", "N3.5", {{"kd", 0.1}, {"ks", 0.6}, {"N", 3.5}}},
-      {"lafortune", "mirror_N25", {{"kd", 0.2}, {"ks", 0.5}, {"Cxy", -1.0}, {"Cz", 1.0}, {"N", 25}}},
+      {"lafortune", "mirror_N25", {{"kd", 0.2}, {"ks", 0.5}, {"Cxy", -1.0}, {"Cz", 0.95}, {"N", 25}}},
+      // |Cxy| = |Cz| is a kink of max(|Cxy|, |Cz|): the Jet takes one side, so not in the Jet cases.
+      {"lafortune", "tie_N25", {{"kd", 0.2}, {"ks", 0.5}, {"Cxy", -1.0}, {"Cz", 1.0}, {"N", 25}}},
       {"lafortune", "offspec_N7.3", {{"kd", 0.1}, {"ks", 0.6}, {"Cxy", -0.8}, {"Cz", 0.6}, {"N", 7.3}}},
       {"lafortune-2", "two",
        {{"kd", 0.1}, {"ks1", 0.4}, {"Cxy1", -1.0}, {"Cz1", 0.9}, {"N1", 60}, {"ks2", 0.3}, {"Cxy2", -0.5},

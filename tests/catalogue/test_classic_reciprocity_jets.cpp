@@ -109,6 +109,7 @@ template <size_t I = 0> void dispatch_jets(const ModelCase& mc, int& found) {
 
 TEST(ClassicModels, JetsEqualDoublesAndFiniteDifferences) {
   for (const ModelCase& mc : test::moderate_cases()) {
+    if (mc.label == "tie_N25") continue;  // the kink of max(|Cxy|, |Cz|)
     int found = 0;
     dispatch_jets(mc, found);
     EXPECT_EQ(found, 1) << mc.model;

@@ -39,8 +39,8 @@ TEST(ClassicSampling, Chi2AndPdfIntegral) {
 // density integrates to exactly 1; checked by quadrature over the disk in polar coordinates
 // around the origin (the Eq. 19 normalization) and by ∫ pdf dω.
 TEST(LowSmoothSampling, DiskNormalizationEq19) {
-  for (double b : {0.01, 3.0, 300.0, 2e4}) {
-    for (double deg : {0.0, 40.0, 80.0, 89.0}) {
+  for (double b : {0.01, 3.0, 2e4}) {
+    for (double deg : {0.0, 50.0, 89.0}) {
       const Vec3d wo = spherical_direction(deg * kPi / 180, 1.1);
       const low_smooth_detail::DiskSampler s(b, wo);
       const double ro = std::sin(deg * kPi / 180);
@@ -52,7 +52,7 @@ TEST(LowSmoothSampling, DiskNormalizationEq19) {
       const double phic = std::atan2(-wo.y(), -wo.x());
       const auto rs = breakpoints(0.0, 1.0, 8, {ro}, 1e-4);
       const auto ps = breakpoints(phic - kPi, phic + kPi, 8, {phic}, 1e-4);
-      const double quad = integrate_grid(f, rs, ps, 1e-9);
+      const double quad = integrate_grid(f, rs, ps, 1e-8);
       EXPECT_NEAR(s.integral(), quad, 1e-6 * quad) << "B " << b << " theta_o " << deg;
     }
   }

@@ -195,6 +195,8 @@ TEST(MerlTabulate, LookupAtCentresReturnsTabulatedValues) {
   std::printf("tabulated: %zu valid cells, %zu below the horizon (raw -1)\n", valid, below);
   EXPECT_EQ(valid, t.valid_count());
   EXPECT_EQ(valid + below, merl::kCellCount);
+  // The count of real full-size MERL-format files (DESIGN.md §12: 1 096 216 valid cells).
+  EXPECT_EQ(valid, 1096216u);
 }
 
 TEST(MerlTabulate, DeterministicAndRejectsNonFinite) {

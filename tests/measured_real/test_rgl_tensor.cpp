@@ -110,10 +110,11 @@ TEST(RglReal, EvalAgreesWithLuminanceTableAtNodes) {
           if (std::abs(ref) > 1e-4) worst_lum = std::max(worst_lum, std::abs(l - ref) / std::abs(ref));
           // The node's value itself, scaled by the same D/(4σ cos θo): ratio per channel is one number.
           const Rgb v = *b.eval(d->first, d->second), raw = b.rgb_node(t, y, x);
-          if (std::abs(raw[1]) > 1e-3 && std::abs(raw[0]) > 1e-3)
+          if (std::abs(raw[1]) > 1e-3 && std::abs(raw[0]) > 1e-3) {
             ASSERT_NEAR(v[0] / raw[0], v[1] / raw[1], 1e-3 * std::abs(v[1] / raw[1]));
+          }
         }
-    EXPECT_GT(nodes, 6000);
+    EXPECT_GT(nodes, 5000);
     EXPECT_LT(worst_uv, 1e-4);   // measured ≈ 1e-6
     EXPECT_LT(worst_lum, 1e-4);  // measured ≈ 1e-6: float32 tables
   }
@@ -182,6 +183,7 @@ TEST(RglReal, SampleWeightsAreSolidAngles) {
         }
       const double a = luminance(b.albedo(spherical_direction(double(b.theta_i()[t]), 0.0)));
       SCOPED_TRACE(name + " node " + std::to_string(t));
+      std::printf("  %-18s θi %.3f  Σ w cos %.4f  Σ w ρ cos %.4f  albedo %.4f  midpoint32 %.4f\n", name.c_str(), double(b.theta_i()[t]), sum_cos, sum_rho, a, luminance(b.albedo(spherical_direction(double(b.theta_i()[t]), 0.0), 32)));
       EXPECT_NEAR(sum_cos, kPi, 0.05 * kPi);
       EXPECT_NEAR(sum_rho, a, 0.05 * a);
     }

@@ -13,7 +13,10 @@ using namespace brdfkit;
 namespace {
 // Incidence angles of the sampling tests, grazing included (θo = 85°).
 const double kThetaODeg[] = {0, 40, 85};
-constexpr long kSamples = 100000;
+constexpr long kSamples = 50000;  // ~60 draws per cell of the 20 × 40 grid: keeps ~200 tests fast
+// Parameter values are the same in the three channels of every parameter set below, so one
+// channel (green) stands for all.
+constexpr int kChannel = 1;
 }  // namespace
 
 TEST(Chi2Harness, AcceptsCosineHemisphere) {
@@ -61,22 +64,20 @@ TEST(Chi2Harness, AccountsForRejectedDraws) {
 // false-alarm rate.
 TEST(Chi2, EveryRegisteredModelSamplesItsPdf) {
   int family = 0;
-  for (const Model* m : all_models()) family += int(test::model_param_sets(*m).size()) * 3 * int(std::size(kThetaODeg));
+  for (const Model* m : all_models()) family += int(test::model_param_sets(*m).size()) * int(std::size(kThetaODeg));
   double min_p = 1;
   for (const Model* m : all_models()) {
     for (const auto& set : test::model_param_sets(*m)) {
-      for (int c = 0; c < 3; ++c) {
-        for (double t : kThetaODeg) {
-          Chi2Options o;
-          o.samples = kSamples;
-          o.seed = 1000 + 10 * unsigned(c) + unsigned(t);
-          o.test_count = family;
-          const auto r = chi2_test(*m, set.values.channel(c), c, spherical_direction(t * kPi / 180, 0.3), o);
-          EXPECT_TRUE(r.passed) << m->name() << " " << set.label << " channel " << c << " theta_o " << t << ": "
-                                << r.message;
-          EXPECT_LE(r.pdf_integral, 1 + 1e-4) << m->name();
-          min_p = std::min(min_p, r.p_value);
-        }
+      for (double t : kThetaODeg) {
+        Chi2Options o;
+        o.samples = kSamples;
+        o.seed = 1000 + unsigned(t);
+        o.test_count = family;
+        const auto r =
+            chi2_test(*m, set.values.channel(kChannel), kChannel, spherical_direction(t * kPi / 180, 0.3), o);
+        EXPECT_TRUE(r.passed) << m->name() << " " << set.label << " theta_o " << t << ": " << r.message;
+        EXPECT_LE(r.pdf_integral, 1 + 1e-4) << m->name();
+        min_p = std::min(min_p, r.p_value);
       }
     }
   }
@@ -90,7 +91,7 @@ TEST(Chi2, FailsWithPdfTimesTwo) {
     for (double t : kThetaODeg) {
       const Vec3d wo = spherical_direction(t * kPi / 180, 0.3);
       Chi2Options o;
-      o.samples = kSamples;
+      o.samples = 20000;
       const auto r = chi2_test([&](const Vec2d& u, double ul) { return m->sample(v.channel(0), 0, wo, u, ul); },
                                [&](const Vec3d& wi) { return 2 * m->pdf(v.channel(0), 0, wo, wi); }, o);
       EXPECT_FALSE(r.passed) << m->name() << " theta_o " << t;

@@ -202,8 +202,8 @@ TEST(CookTorrance, AlbedoBoundedForPlausibleParameters) {
           ch[1] = 0.75;  // ks
           ch[size_t(M::fresnel_offset())] = 1.0;  // F0 = 1: F ≡ 1, the largest Schlick term
         }
-        for (double t : albedo_angles_deg()) {
-          const double a = albedo(model, set.values.channel(0), 0, t * kPi / 180);
+        for (double t : {0.0, 30.0, 60.0, 80.0}) {
+          const double a = albedo(model, set.values.channel(0), 0, t * kPi / 180, 1e-6);
           EXPECT_TRUE(std::isfinite(a)) << M::name();
           EXPECT_LE(a, 1 + 1e-6) << M::name() << " " << set.label << " theta_i " << t;
           EXPECT_GE(a, 0.25) << M::name() << " " << set.label << " theta_i " << t;  // at least the diffuse part

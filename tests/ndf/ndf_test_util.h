@@ -8,12 +8,22 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "brdfkit/core/vec.h"
 
 namespace brdfkit::test {
+
+// "params 0.2 1.5" for failure messages (ostringstream: GCC 12's -Wrestrict misfires on
+// string concatenation at -O3).
+inline std::string describe_params(const std::vector<double>& p) {
+  std::ostringstream os;
+  os << "params";
+  for (double v : p) os << ' ' << v;
+  return os.str();
+}
 
 // θ = (π/2) t⁴ crowds quadrature nodes and χ² bins near θ = 0, where lobes as narrow as
 // 0.005 rad live: such a lobe spans t ∈ [0, 0.2].

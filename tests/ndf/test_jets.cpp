@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "all_ndfs.h"
+#include "ndf_test_util.h"
 
 namespace brdfkit {
 namespace {
@@ -23,8 +24,7 @@ template <template <class> class N> void expect_jets(std::vector<double> p, std:
   for (std::size_t i = 0; i < p.size(); ++i) pj.emplace_back(p[i], int(i));
   const N<J> dj(pj.data());
   const N<double> d(p.data());
-  std::string name = "params";
-  for (double v : p) name += " " + std::to_string(v);
+  const std::string name = test::describe_params(p);
   for (double c : cosines) {
     const double x = (1 - c * c) / (c * c);
     const J Dj = dj.D(J(c)), Pj = dj.P22(J(x)), Uj = dj.unit(J(c));

@@ -18,8 +18,7 @@ template <template <class> class N> void expect_normalized(const std::vector<std
   for (const auto& p : sets) {
     const N<double> d(p.data());
     const double I = cos_weighted_integral([&](double c) { return d.D(c); });
-    std::string name = "params";
-    for (double v : p) name += " " + std::to_string(v);
+    const std::string name = test::describe_params(p);
     EXPECT_NEAR(I, 1.0, tol) << name;
     EXPECT_NEAR(d.unit(1.0), 1.0, 1e-12) << name;
     // P22 and D agree: D = P22(tan²θ)/cos⁴θ.

@@ -28,8 +28,7 @@ template <class Dist> double chi2_p(const Dist& sampler, const Dist& density, lo
 // (a broad or scale-free lobe needs more than 5% to show with 1e5 samples).
 template <template <class> class N>
 void expect_sampler(std::vector<double> p, int perturb = 0, long n = kSamples, double factor = 1.05) {
-  std::string name = "params";
-  for (double v : p) name += " " + std::to_string(v);
+  const std::string name = test::describe_params(p);
   const N<double> d(p.data());
   const double ok = chi2_p(d, d, n);
   EXPECT_GT(ok, 0.01) << name;

@@ -385,9 +385,12 @@ Conversion convert_ndf(const std::string& from_name, const std::string& to_name,
       if (!f) {
         c.warnings.push_back(fmt::format("seed 001 gives no fitted formula from {} to {}; using rmse", from.name, to.name));
       } else if (!(f->m_B >= kSawickiMinMB && f->m_B <= kSawickiMaxMB)) {
-        c.warnings.push_back(fmt::format("{} {} = {} is m_B = {:.6g} by seed 001's formulas, outside the range "
-                                         "[{}, {}] they were fitted on; using rmse",
-                                         from.name, from.symbol, value, f->m_B, kSawickiMinMB, kSawickiMaxMB));
+        const std::string source = from.symbol == "m_B" ? fmt::format("m_B = {}", value)
+                                                         : fmt::format("{} {} = {} (m_B = {:.6g} by the same formulas)",
+                                                                       from.name, from.symbol, value, f->m_B);
+        c.warnings.push_back(fmt::format("{} is outside the range m_B in [{}, {}] seed 001's formulas were fitted on; "
+                                         "using rmse",
+                                         source, kSawickiMinMB, kSawickiMaxMB));
       } else if (!std::isfinite(f->value) || f->value < to.lower || f->value > to.upper) {
         c.warnings.push_back(fmt::format("seed 001's formula gives {} {} = {}, outside [{:g}, {:g}]; using rmse",
                                          to.name, to.symbol, f->value, to.lower, to.upper));

@@ -1,6 +1,9 @@
 #include "brdfkit/measured/merl_brdf.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
+#include <vector>
 
 namespace brdfkit {
 
@@ -20,14 +23,33 @@ double merl_cell_weight(const merl::Cell& c) {
 }
 
 SampleSet MerlBrdf::samples() const {
+  // One chunk per θh row in parallel (directions cost trigonometry), joined in row order so the
+  // result is the same on any number of threads.
+  std::vector<SampleSet> rows(merl::kResThetaH);
+  tbb::parallel_for(0, merl::kResThetaH, [&](int ih) {
+    SampleSet& row = rows[size_t(ih)];
+    const size_t begin = merl::cell_offset({ih, 0, 0}), end = begin + size_t(merl::kResThetaD) * merl::kResPhiD;
+    for (size_t k = begin; k < end; ++k) {
+      if (!table_.valid(k)) continue;
+      const merl::Cell c = merl::cell_at(k);
+      Vec3d wi, wo;
+      if (!merl::cell_directions(c, wi, wo)) continue;
+      row.push_back(wi, wo, table_.value(k), merl_cell_weight(c), true);
+    }
+  });
   SampleSet s;
-  s.reserve(table_.valid_count());
-  for (size_t k = 0; k < merl::kCellCount; ++k) {
-    if (!table_.valid(k)) continue;
-    const merl::Cell c = merl::cell_at(k);
-    Vec3d wi, wo;
-    if (!merl::cell_directions(c, wi, wo)) continue;
-    s.push_back(wi, wo, table_.value(k), merl_cell_weight(c), true);
+  size_t n = 0;
+  for (const SampleSet& row : rows) n += row.size();
+  s.reserve(n);
+  for (const SampleSet& row : rows) {
+    auto append = [](std::vector<double>& dst, const std::vector<double>& src) {
+      dst.insert(dst.end(), src.begin(), src.end());
+    };
+    append(s.wi_x, row.wi_x), append(s.wi_y, row.wi_y), append(s.wi_z, row.wi_z);
+    append(s.wo_x, row.wo_x), append(s.wo_y, row.wo_y), append(s.wo_z, row.wo_z);
+    for (size_t c = 0; c < 3; ++c) append(s.rgb[c], row.rgb[c]);
+    append(s.weight, row.weight);
+    s.valid.insert(s.valid.end(), row.valid.begin(), row.valid.end());
   }
   return s;
 }

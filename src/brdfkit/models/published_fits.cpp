@@ -6,11 +6,13 @@
 #include <fstream>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/fresnel/bagher_fresnel.h"
 #include "brdfkit/fresnel/dielectric.h"
 #include "brdfkit/models/cook_torrance.h"
 #include "brdfkit/models/microfacet_model.h"
 #include "brdfkit/models/named_model.h"
 #include "brdfkit/ndf/beckmann.h"
+#include "brdfkit/ndf/sgd.h"
 
 namespace brdfkit {
 
@@ -19,6 +21,10 @@ namespace {
 using LowCookTorrance =
     Named<CookTorrance<Beckmann, DielectricFresnel, Masking::VGroove>, "cook-torrance-low2012",
           "kd/pi + ks F D G/(4 cos_i cos_o): Beckmann D, dielectric F(eta), V-groove G (Low 2012's published fits)">;
+
+using BagherSgd =
+    Named<CookTorrance<Sgd, BagherFresnel>, "cook-torrance-sgd-bagher2012",
+          "kd/pi + ks F D G/(4 cos_i cos_o): SGD D, Bagher F0/F1 Fresnel, Smith G (Bagher 2012's published fits)">;
 
 const Model* find_model(const std::string& name) {
   for (const Model* m : all_models())
@@ -56,6 +62,11 @@ std::array<double, 3> scaled(std::array<double, 3> x, double s) {
 
 }  // namespace
 
+const Model* bagher_sgd_model() {
+  static const MicrofacetModelAdapter<BagherSgd> m;
+  return &m;
+}
+
 const Model* low_cook_torrance_model() {
   static const MicrofacetModelAdapter<LowCookTorrance> m;
   return &m;
@@ -84,10 +95,8 @@ PublishedFits PublishedFits::read(const std::filesystem::path& file) {
   if (out.lobe_ == "LowSmooth") out.model_ = "low-smooth";
   else if (out.lobe_ == "LowAshikhminShirley") out.model_ = "ashikhmin-shirley-dielectric";
   else if (out.lobe_ == "LowCookTorrance") out.model_ = "cook-torrance-low2012";
-  else if (out.lobe_ == "Bagher") {
-    if (find_model("cook-torrance-sgd")) out.model_ = "cook-torrance-sgd";
-    else out.reason_ = "lobe 'Bagher' needs the model cook-torrance-sgd (SGD distribution, Bagher Fresnel), not in this build";
-  } else if (out.lobe_ == "LowMicrofacetFit") {
+  else if (out.lobe_ == "Bagher") out.model_ = "cook-torrance-sgd-bagher2012";
+  else if (out.lobe_ == "LowMicrofacetFit") {
     out.reason_ = "lobe 'LowMicrofacetFit' needs the Low 2012 microfacet model (seed 003 Eq. 15), not in the catalogue yet";
   } else {
     out.reason_ = "unknown lobe '" + out.lobe_ + "'";
@@ -106,7 +115,9 @@ Brdf PublishedFits::brdf(const std::string& material) const {
   const std::string where = file_.string();
   if (!supported()) throw InputError(where, "unsupported: " + reason_);
   if (!materials_.contains(material)) throw InputError(where, "no material '" + material + "'");
-  const Model* m = model_ == "cook-torrance-low2012" ? low_cook_torrance_model() : find_model(model_);
+  const Model* m = model_ == "cook-torrance-low2012"          ? low_cook_torrance_model()
+                   : model_ == "cook-torrance-sgd-bagher2012" ? bagher_sgd_model()
+                                                              : find_model(model_);
   if (!m) throw InputError(where, "model '" + model_ + "' is not registered");
   ParamValues v = ParamValues::defaults(m->params());
   const std::string mwhere = where + ": material '" + material + "'";

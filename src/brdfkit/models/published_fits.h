@@ -8,7 +8,9 @@
 //   LowAshikhminShirley  ashikhmin-shirley-dielectric    ks = albedo, N = sharpness, eta = fresnelReflectance
 //   LowCookTorrance      cook-torrance-low2012           ks = 4·albedo: the file's D has no 1/π and the lobe
 //                                                        a 1/π, so albedo·πD·G·F/(π ci co) = 4 albedo · D F G/(4 ci co)
-//   Bagher               cook-torrance-sgd (if built)    ks = 4·albedo/π (seed 000 Eq. 1 vs seed 004 Eq. 1)
+//   Bagher               cook-torrance-sgd-bagher2012    ks = 4·albedo/π (seed 000 Eq. 1 vs seed 004 Eq. 1), alpha, p
+//                                                        per channel, F0/F1 = eta[0]/eta[1]; Smith G from the SGD Λ
+//                                                        in place of the file's fitted Eq. 9 approximation
 //   LowMicrofacetFit     unsupported (the Löw microfacet model is not in the catalogue)
 // plus the Lambertian albedo → kd everywhere. Values are loaded as published, even where a
 // fitting bound of the model is narrower (one Cook-Torrance roughness is 2.09 > 2).
@@ -54,5 +56,8 @@ std::vector<std::filesystem::path> published_fit_files(const std::filesystem::pa
 // Löw 2012's Cook-Torrance as their published fits define it: Beckmann D, Cook-Torrance
 // dielectric F(η), V-groove G (DESIGN.md §4–6); registered as `cook-torrance-low2012`.
 const Model* low_cook_torrance_model();
+// Bagher 2012's model as their published fits define it: SGD D, Bagher F0/F1 Fresnel (seed 000
+// Eq. 11), uncorrelated Smith G; registered as `cook-torrance-sgd-bagher2012`.
+const Model* bagher_sgd_model();
 
 }  // namespace brdfkit

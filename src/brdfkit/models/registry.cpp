@@ -47,6 +47,7 @@ std::span<const Model* const> all_models() {
       instance<LowSmooth>(),
       instance<LowSmooth2>(),
       low_cook_torrance_model(),
+      bagher_sgd_model(),
   };
   return models;
 }

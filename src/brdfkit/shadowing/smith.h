@@ -10,7 +10,7 @@
 //   smith_g_correlated(ndf, ci, co)       1/(1 + Λ(i) + Λ(o))   (height-correlated option)
 //
 // How smith_lambda_numeric picks its method: a distribution template Ndf<T> for which
-// SmithShape<Ndf> is specialized (below, or in shadowing/smith_shapes.h) gets the table of
+// SmithShape<Ndf> is specialized (below; tests add their own) gets the table of
 // shadowing/smith_table.h, built lazily and thread-safely on first use over the box of
 // SmithShape<Ndf>::axes() and shared by all scalar types (double and every Jet); parameter
 // values outside that box, and distributions without a SmithShape, get the direct integral of
@@ -80,7 +80,7 @@ template <> struct SmithShape<Sgd> {
 };
 template <> struct SmithShape<ExponentialPower> {
   static constexpr int kDims = 2;
-  static std::vector<SmithAxis> axes() { return {{1e-4, 2.0, 6, true}, {0.05, 10.0, 90, true}}; }
+  static std::vector<SmithAxis> axes() { return {{1e-4, 2.0, 6, true}, {0.05, 10.0, 140, true}}; }
   template <class T> static std::array<T, 2> values(const ExponentialPower<T>& d) { return {d.sigma, d.p}; }
 };
 template <> struct SmithShape<Exponential> {
