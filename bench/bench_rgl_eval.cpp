@@ -1,6 +1,6 @@
 // RGL tensor_file evaluation throughput, one core (DESIGN.md §2 evaluation: inverse VNDF warp +
 // bilinear RGB look-up + D/(4σ cos θo)). Reproduce with:
-//   ninja -C <build> bench_rgl_eval && <build>/bench_rgl_eval --benchmark_filter=RglEval
+//   ninja -C <build> bench_rgl_eval && <build>/bench/bench_rgl_eval --benchmark_filter=RglEval
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -22,7 +22,7 @@ void RglEval(benchmark::State& state) {
   }
   static bool printed = false;
   if (!printed) {
-    std::printf("reproduce: ninja -C <build> bench_rgl_eval && <build>/bench_rgl_eval --benchmark_filter=RglEval\n");
+    std::printf("reproduce: ninja -C <build> bench_rgl_eval && <build>/bench/bench_rgl_eval --benchmark_filter=RglEval (one core: taskset -c 0)\n");
     printed = true;
   }
   const RglBrdf brdf(rgl_file());

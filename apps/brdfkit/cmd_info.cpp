@@ -19,6 +19,7 @@
 
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/fit/file_digest.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"
@@ -201,10 +202,14 @@ int run_info(const Options& opt) {
 
   // In parallel, results kept in the given order; the first failure in that order is reported.
   std::vector<std::optional<MeasuredSummary>> results(src.files.size());
+  std::vector<std::string> digests(src.files.size());
   std::vector<std::exception_ptr> errors(src.files.size());
   tbb::parallel_for(size_t(0), src.files.size(), [&](size_t k) {
     try {
       results[k] = summarize(*load_measured(src.files[k]));
+      // SHA-256 names the exact data (DESIGN.md §1); MERL files can be checked against
+      // data/merl/merl-sha256.tsv.
+      digests[k] = fit::sha256_file(src.files[k]);
     } catch (...) {
       errors[k] = std::current_exception();
     }
@@ -215,7 +220,10 @@ int run_info(const Options& opt) {
   // The fallback's file is removed on return: say so wherever its path is shown.
   if (src.kind == "tabulated") results[0]->path = "(temporary) " + results[0]->path;
   nlohmann::json files = nlohmann::json::array();
-  for (const auto& r : results) files.push_back(summary_json(*r));
+  for (size_t k = 0; k < results.size(); ++k) {
+    files.push_back(summary_json(*results[k]));
+    files.back()["sha256"] = digests[k];
+  }
   const nlohmann::json doc = {{"program", "brdfkit"},
                               {"version", BRDFKIT_VERSION},
                               {"command", "info"},

@@ -93,7 +93,7 @@ template <class M> void check_jets(const ModelCase& mc) {
   EXPECT_GT(compared, 5) << mc.model << " " << mc.label;
 }
 
-using Types = std::tuple<Ward, WardAniso, WardDuer, BlinnPhong, Lafortune, Lafortune2, AshikhminShirley,
+using Types = std::tuple<Ward, WardAniso, WardDuer, BlinnPhongLobe, Lafortune, Lafortune2, AshikhminShirley,
                          AshikhminShirleyDielectric, LowSmooth, LowSmooth2>;
 
 template <size_t I = 0> void dispatch_jets(const ModelCase& mc, int& found) {

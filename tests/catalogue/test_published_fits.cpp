@@ -105,6 +105,37 @@ TEST(PublishedFits, MatchConventionsFormulas) {
   }
 }
 
+// Bagher 2012: rho = albedo/π + albedo K e^{−t} t^{−p}/(π cos⁴θh) G F/(π ci co), t = α + tan²θh/α,
+// F = F0 + (1 − F0)(1 − cos θd)⁵ − F1 cos θd. brdfkit's G is Smith from the SGD Λ, not the file's
+// fitted Eq. 9 approximation, so compare near normal incidence where both G are ≈ 1 (2 %).
+TEST(PublishedFits, BagherMatchesConventionsNearNormal) {
+  BRDFKIT_REQUIRE_DATA("published-fits");
+  const auto fits = PublishedFits::read(fits_dir() / "bagher2012-sgd.json");
+  ASSERT_TRUE(fits.supported()) << fits.unsupported_reason();
+  for (const std::string mat : {"alum-bronze", "white-fabric2"}) {
+    const Brdf b = fits.brdf(mat);
+    const auto kd = lobe_params("bagher2012-sgd.json", mat, "Lambertian")["albedo"];
+    const auto p = lobe_params("bagher2012-sgd.json", mat, "Bagher");
+    const Pair near[] = {{spherical_direction(0.2, 0.0), spherical_direction(0.2, kPi + 0.002)},
+                         {spherical_direction(0.1, 0.3), spherical_direction(0.3, kPi + 0.3)}};
+    for (const auto& [wi, wo] : near) {
+      const Vec3d h = (wi + wo).normalized();
+      const double ch = h.z(), tan2 = (1 - ch * ch) / (ch * ch), cd = wi.dot(h);
+      const Rgb got = b.eval(wi, wo);
+      for (int c = 0; c < 3; ++c) {
+        const double al = p["alpha"][c].get<double>(), pp = p["p"][c].get<double>();
+        const double t = al + tan2 / al;
+        const double d = p["K"][c].get<double>() * std::exp(-t) / std::pow(t, pp) / (kPi * std::pow(ch, 4));
+        const double f0 = p["eta"][0][c].get<double>(), f1 = p["eta"][1][c].get<double>();
+        const double f = f0 + (1 - f0) * std::pow(1 - cd, 5) - f1 * cd;
+        const double spec = p["albedo"][c].get<double>() * d * f / (kPi * wi.z() * wo.z());
+        const double want = kd[c].get<double>() / kPi + spec;
+        EXPECT_NEAR(got[c], want, 0.02 * std::abs(spec) + 1e-12) << mat << " Bagher c" << c;
+      }
+    }
+  }
+}
+
 TEST(PublishedFits, UnsupportedAndBadInputAreClearErrors) {
   BRDFKIT_REQUIRE_DATA("published-fits");
   const auto micro = PublishedFits::read(fits_dir() / "low2012-microfacet-E2.json");
@@ -142,7 +173,10 @@ TEST(PublishedFits, UnsupportedAndBadInputAreClearErrors) {
 
 // Directional albedo at θi = 30° (luminance) of every material in every loadable file: the
 // fits describe the same 100 measurements, so they agree (a convention's factor π or 4 would
-// show at once). Bounds from DESIGN.md §10 and an independent check (median 1.10, worst 2.03).
+// show at once). Median ≤ 1.2 as DESIGN.md §10's independent check found (median 1.10). Its
+// worst case (2.03) is exceeded by one pair of Löw's own fits: steel, Ashikhmin-Shirley E1
+// (ks·F ≈ 0.105·0.65 + kd 0.066 → Y 0.134) against E2 (0.613·0.070 + 0.018 → Y 0.062), ratio
+// 2.17 by hand from the files' conventions as well; so the per-material bound here is 2.2.
 TEST(PublishedFits, AlbedosAgreeAcrossFiles) {
   BRDFKIT_REQUIRE_DATA("published-fits");
   std::map<std::string, std::vector<std::pair<std::string, double>>> by_material;
@@ -159,7 +193,7 @@ TEST(PublishedFits, AlbedosAgreeAcrossFiles) {
       const Brdf b = fits.brdf(mat);
       double a[3];
       for (int c = 0; c < 3; ++c)
-        a[c] = test::mc_albedo(b.model(), b.values().channel(c), c, 30.0 * kPi / 180, 48);
+        a[c] = test::mc_albedo(b.model(), b.values().channel(c), c, 30.0 * kPi / 180, 32);
       const double y = test::luminance(a[0], a[1], a[2]);
       ASSERT_TRUE(std::isfinite(y) && y > 0) << fits.stem() << " " << mat;
       by_material[mat].push_back({fits.stem(), y});
@@ -176,7 +210,7 @@ TEST(PublishedFits, AlbedosAgreeAcrossFiles) {
     }
     const double r = hi / lo;
     ratios.push_back(r);
-    EXPECT_LE(r, 2.1) << mat;
+    EXPECT_LE(r, 2.2) << mat;
     if (r > 1.5)
       std::cout << "[ ratio>1.5] " << mat << " " << r << " (max " << hi << " " << hi_f << ", min " << lo << " " << lo_f
                 << ")\n";

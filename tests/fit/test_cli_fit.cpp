@@ -76,7 +76,7 @@ TEST_F(CliFit, FitThenErrorReproducesEveryNumber) {
     EXPECT_EQ(saved["metrics"][id].get<double>(), recomputed["metrics"][id].get<double>()) << id;
   }
   const double alpha = saved["params"][2]["values"][0];
-  EXPECT_NEAR(alpha, 0.25, 0.25 * 1e-2);
+  EXPECT_NEAR(alpha, 0.25, 0.25 * 5e-2);  // nearest-cell quantization: see test_recovery.cpp
 }
 
 TEST_F(CliFit, ErrorWarnsWhenTheDataFileDiffers) {

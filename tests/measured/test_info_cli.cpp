@@ -162,6 +162,7 @@ TEST(InfoCli, JsonForTabulatedFiles) {
   EXPECT_EQ(j["files"][0]["path"], (dir / "b.binary").string());
   const auto& a = j["files"][1];
   EXPECT_EQ(a["format"], "merl");
+  EXPECT_EQ(a["sha256"].get<std::string>().size(), 64u);
   EXPECT_EQ(a["total"], merl::kCellCount);
   EXPECT_EQ(a["valid"], half.valid_count());
   EXPECT_NEAR(a["channels"]["G"]["mean"].get<double>(), 0.25 * kInvPi, 1e-12);

@@ -52,9 +52,9 @@ double albedo(const BrdfFunction& rho, double theta_i, double rel_tol) {
     const Vec3d wo = spherical_direction(t, phi);
     return rho(wi, wo) * std::cos(t) * std::sin(t);
   };
-  const auto thetas = breakpoints(0.0, kPi / 2, 16, {theta_i});
-  const auto phis = breakpoints(-kPi, kPi, 32, {-kPi, 0.0, kPi});
-  return integrate_grid(f, thetas, phis, rel_tol);
+  const auto thetas = breakpoints(0.0, kPi / 2, 8, {theta_i});
+  const auto phis = breakpoints(-kPi, kPi, 16, {-kPi, 0.0, kPi});
+  return integrate_grid(f, thetas, phis, rel_tol, 6);
 }
 
 double albedo(const Model& model, const double* p, int c, double theta_i, double rel_tol) {

@@ -3,10 +3,10 @@
 // or as a MeasuredBrdf that answers eval().
 //
 // Quadrature (documented choice): integrate over the half vector h instead of wo, since measured
-// and microfacet lobes are compact in h. wo = reflect(wi, h) and dωo = 4 |wi·h| dωh (the
-// half-vector Jacobian, Walter et al. 2007 Eq. 14), with h on the upper hemisphere and wi·h > 0,
-// which reaches every wo above the horizon exactly once; h whose wo falls below the horizon are
-// rejected. θh = (π/2) s², dθh = π s ds, concentrates the nodes near the specular peak as MERL's
+// and microfacet lobes are compact in h. wo = reflect(wi, h) and dωo = 4 |wi·h| dωh (the Jacobian
+// ‖∂ωo/∂ωm‖ of seed 000's importance-sampling weight, after Walter et al. 2007), with h on the
+// upper hemisphere and wi·h > 0, which reaches every wo above the horizon exactly once; h whose
+// wo falls below the horizon are rejected. θh = (π/2) s², dθh = π s ds, concentrates the nodes near the specular peak as MERL's
 // own θh axis does. In s ∈ [0, 1] and φh ∈ [0, 2π): composite Gauss–Legendre
 // (boost::math::quadrature::gauss, 8 points per panel), panels equal in s and in φh.
 // Where ρ has no value (nullopt: not measured) the node is skipped and its share of

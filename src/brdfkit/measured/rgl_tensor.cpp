@@ -297,25 +297,39 @@ std::optional<std::pair<Vec3d, Vec3d>> RglBrdf::node_directions(size_t t, int y,
 SampleSet RglBrdf::samples() const {
   SampleSet s;
   const double du = 1.0 / (grid_ - 1);
+  constexpr int kSub = 4;  // sub-samples per cell side for the cell's solid angle
   for (size_t t = 0; t < theta_i_.size(); ++t) {
     // A θi node on the horizon has no incident light: skip it.
     if (std::cos(double(theta_i_[t])) < 1e-6) continue;
     const Vec3d wc = spherical_direction(double(theta_i_[t]), 0.0);
     const double params[2] = {0.0, theta_i_[t]};
+    const double sigma_c = sigma_.eval(Vec2d(theta2u(theta_i_[t]), phi2u(0.0)));
+    // Where the warp sends a unit-square point, and |dωx/du| there: Dupuy & Jakob 2018 §5
+    // (Mitsuba 3 `measured`): dωm = 2π² u_m,x sin θm du_m, dωx = 4 (ωc·m) dωm, du_m = pdf du.
+    auto warp = [&](const Vec2d& u) {
+      const auto [u_m, pdf] = vndf_.sample(u, params);
+      const double theta_m = u2theta(u_m.x());
+      const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()));
+      const Vec3d wx = reflect(wc, m).normalized();
+      const double jac = 2 * kPi * kPi * u_m.x() * std::sin(theta_m) * 4 * wc.dot(m);
+      return std::tuple{u_m, wx, pdf > 0 && wx.z() > 0 ? jac / pdf : 0.0};
+    };
     for (int y = 0; y < grid_; ++y)
       for (int x = 0; x < grid_; ++x) {
-        const auto [u_m, pdf] = vndf_.sample(Vec2d(x * du, y * du), params);
-        const double theta_m = u2theta(u_m.x());
-        const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()));
-        const Vec3d wx = reflect(wc, m).normalized();
+        const auto [u_m, wx, unused] = warp(Vec2d(x * du, y * du));
         if (!(wx.z() > 0)) continue;
-        // Dupuy & Jakob 2018 §5 (Mitsuba 3 `measured`): dωm = 2π² u_m,x sin θm du_m and
-        // dωx = 4 (ωc·m) dωm. Trapezoid weight of the node in the unit square, times |dωx/du| = jacobian / pdf.
-        const double trap = (x == 0 || x == grid_ - 1 ? 0.5 : 1.0) * (y == 0 || y == grid_ - 1 ? 0.5 : 1.0) * du * du;
-        const double jac = 2 * kPi * kPi * u_m.x() * std::sin(theta_m) * 4 * wc.dot(m);
-        const double weight = pdf > 0 ? trap * jac / pdf : 0.0;
+        // Weight: the solid angle of wo over the node's cell [x ± ½, y ± ½] ∩ [0,1]² of the unit
+        // square, by a 4 × 4 midpoint rule. (Trapezoid weights at the nodes would give the x = 0
+        // column, h = n, no weight: the specular peak of glossy files would be lost.)
+        const double x0 = std::max(0.0, (x - 0.5) * du), x1 = std::min(1.0, (x + 0.5) * du);
+        const double y0 = std::max(0.0, (y - 0.5) * du), y1 = std::min(1.0, (y + 0.5) * du);
+        double weight = 0;
+        for (int j = 0; j < kSub; ++j)
+          for (int i = 0; i < kSub; ++i)
+            weight += std::get<2>(warp(Vec2d(x0 + (i + 0.5) / kSub * (x1 - x0), y0 + (j + 0.5) / kSub * (y1 - y0))));
+        weight *= (x1 - x0) * (y1 - y0) / (kSub * kSub);
         Rgb v = rgb_node(t, y, x);
-        if (jacobian_) v *= ndf_.eval(u_m) / (4 * sigma_.eval(Vec2d(theta2u(theta_i_[t]), phi2u(0.0))) * wx.z());
+        if (jacobian_) v *= ndf_.eval(u_m) / (4 * sigma_c * wx.z());
         else v /= wx.z();
         s.push_back(wc, wx, v, weight, true);
       }

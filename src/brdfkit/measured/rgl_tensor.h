@@ -30,9 +30,10 @@ class RglBrdf final : public MeasuredBrdf {
   // ρ(wi, wo) in sr⁻¹ with ωc = wi; raw table values (may be < 0 where the file holds noise).
   std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const override;
   // The table nodes: for each theta_i node and each node of the rgb grid, the direction pair the
-  // VNDF warp maps it to (nodes whose wo falls below the horizon are skipped), its raw value, and
-  // weight = solid angle of wo the node stands for within its θi slice (trapezoid rule in the
-  // warped unit square times |dωo/du|), so Σ weight·ρ·cosθo over a slice ≈ that slice's albedo.
+  // VNDF warp maps it to (nodes whose wo falls below the horizon are skipped; the θi node on the
+  // horizon too), its raw value, and weight = solid angle of wo the node stands for within its θi
+  // slice: ∫ |dωo/du| over the node's cell (node ± ½ spacing) of the warp's unit square, so the
+  // weights of a slice sum to 2π and Σ weight·ρ·cosθo ≈ that slice's albedo.
   SampleSet samples() const override;
 
   // ρ with the table conditioned on `wc` and the other direction `wx`. With `cosine_of_other`

@@ -16,7 +16,7 @@
 
 namespace brdfkit {
 
-struct BlinnPhong {
+struct BlinnPhongLobe {
   static std::string_view name() { return "blinn-phong"; }
   static std::string_view description() { return "Lambert + Blinn-Phong half-vector lobe, ks (N+2)/(8 pi) cos^N th"; }
   static constexpr bool kReciprocal = true;

@@ -39,7 +39,7 @@ std::span<const Model* const> all_models() {
       instance<Ward>(),
       instance<WardAniso>(),
       instance<WardDuer>(),
-      instance<BlinnPhong>(),
+      instance<BlinnPhongLobe>(),
       instance<Lafortune>(),
       instance<Lafortune2>(),
       instance<AshikhminShirley>(),
