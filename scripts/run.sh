@@ -8,5 +8,5 @@ bash "$root/scripts/build.sh"
 out=${OUT_DIR:-$root/results}
 mkdir -p "$out"
 # `info`: what each measured file holds and its directional albedo (human table on stdout, JSON saved).
-"${BUILD_DIR:-$root/build}/brdfkit" info --data "${DATA_DIR:-$root/../shared/data}" --out "$out/info.json"
+"${BUILD_DIR:-$root/build}/brdfkit" info --data "${DATA_DIR:-$(cd "$root/.." && pwd)/shared/data}" --out "$out/info.json"
 echo "run.sh: results are in $out/info.json"
