@@ -37,7 +37,7 @@ class Model {
   virtual double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi) const = 0;
 };
 
-template <class M> class ModelAdapter final : public Model {
+template <class M> class ModelAdapter : public Model {
  public:
   ModelAdapter() : table_(M::params()) {}
   std::string_view name() const override { return M::name(); }
