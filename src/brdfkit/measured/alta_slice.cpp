@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/measured/text_numbers.h"
 
 namespace brdfkit {
 
@@ -46,19 +47,7 @@ AltaSlice::AltaSlice(const std::filesystem::path& file) : path_(file.string()) {
     }
     if (!dim || !param_in || !param_out)
       throw InputError(where, "data before the ALTA header (#DIM 1 3, #PARAM_IN COS_TH, #PARAM_OUT RGB_COLOR)");
-    std::vector<double> v;
-    std::istringstream row(line);
-    while (row >> tok) {
-      size_t used = 0;
-      double x = 0;
-      try {
-        x = std::stod(tok, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != tok.size() || !std::isfinite(x)) throw InputError(where, fmt::format("not a number: '{}'", tok));
-      v.push_back(x);
-    }
+    const std::vector<double> v = parse_numbers(line, where);
     if (v.size() != 4) throw InputError(where, fmt::format("row has {} values, expected 4 (cos θh R G B)", v.size()));
     if (v[0] < 0 || v[0] > 1) throw InputError(where, fmt::format("cos θh = {} outside [0, 1]", v[0]));
     rows.emplace_back(v[0], Rgb(v[1], v[2], v[3]));

@@ -10,29 +10,11 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/measured/spectral_rgb.h"
+#include "brdfkit/measured/text_numbers.h"
 
 namespace brdfkit {
 
 namespace {
-
-// Numbers of one line; InputError naming the line for anything else.
-std::vector<double> parse_numbers(const std::string& line, const std::string& where) {
-  std::vector<double> v;
-  std::istringstream ss(line);
-  std::string tok;
-  while (ss >> tok) {
-    size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(tok, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != tok.size() || !std::isfinite(x)) throw InputError(where, fmt::format("not a number: '{}'", tok));
-    v.push_back(x);
-  }
-  return v;
-}
 
 // Ring index k of 1 − cos θs = (k/10)² (DESIGN.md §2), nearest ring.
 int ring_of(double theta_s) { return int(std::lround(10 * std::sqrt(std::max(0.0, 1 - std::cos(theta_s))))); }

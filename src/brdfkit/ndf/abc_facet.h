@@ -13,6 +13,7 @@
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/models/param.h"
+#include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
@@ -43,11 +44,7 @@ template <class T> struct AbcFacet {
     return exp(-C * log1p(B * (T(1) - cos_theta)));
   }
   T D(const T& cos_theta) const { return A * unit(cos_theta); }
-  T P22(const T& x) const {
-    using std::sqrt;
-    const T c2 = T(1) / (T(1) + x);
-    return D(sqrt(c2)) * c2 * c2;
-  }
+  T P22(const T& x) const { return p22_from_d(*this, x); }
   // ∫ D cosθ dω (see the header comment).
   T normalization() const { return T(2 * kPi) * A * cos_weighted_mass(); }
   AbcFacet normalized() const {

@@ -28,7 +28,7 @@ double gaussian_ndf_integral(double m, double* dI_dm) {
 
 ThetaCdf gaussian_ndf_cdf(double m) {
   const Gaussian<double> g(&m);
-  return ThetaCdf([&](double t) { return 2 * kPi * g.D(std::cos(t)) * std::cos(t) * std::sin(t); }, upper_limit(m));
+  return theta_cdf_of(g, upper_limit(m));
 }
 
 }  // namespace brdfkit

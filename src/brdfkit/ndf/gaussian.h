@@ -11,6 +11,7 @@
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/models/param.h"
+#include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/ndf/scalar_chain.h"
 #include "brdfkit/ndf/theta_cdf.h"
 #include "brdfkit/shadowing/smith.h"
@@ -45,11 +46,7 @@ template <class T> struct Gaussian {
     return exp(-theta * theta / (m * m));
   }
   T D(const T& cos_theta) const { return norm * unit(cos_theta); }
-  T P22(const T& x) const {
-    using std::sqrt;
-    const T c2 = T(1) / (T(1) + x);
-    return D(sqrt(c2)) * c2 * c2;
-  }
+  T P22(const T& x) const { return p22_from_d(*this, x); }
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   Vec3d sample(const Vec2d& u) const

@@ -8,6 +8,7 @@
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/models/param.h"
+#include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/ndf/theta_cdf.h"
 #include "brdfkit/shadowing/smith.h"
 
@@ -34,11 +35,7 @@ template <class T> struct SawickiRational {
     const T q2 = q * q;
     return T(256) * cos_theta / (q2 * q2);
   }
-  T P22(const T& x) const {
-    using std::sqrt;
-    const T c2 = T(1) / (T(1) + x);
-    return D(sqrt(c2)) * c2 * c2;
-  }
+  T P22(const T& x) const { return p22_from_d(*this, x); }
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   Vec3d sample(const Vec2d& u) const
@@ -46,7 +43,7 @@ template <class T> struct SawickiRational {
   {
     const SawickiRational self = *this;
     const ThetaCdf& cdf = cdf_->get([self] {
-      return ThetaCdf([&](double t) { return 2 * kPi * self.D(std::cos(t)) * std::cos(t) * std::sin(t); }, kPi / 2);
+      return theta_cdf_of(self, kPi / 2);
     });
     return direction_from_theta(cdf.sample(u.x()), u.y());
   }

@@ -9,6 +9,7 @@
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/models/param.h"
+#include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
@@ -29,11 +30,7 @@ template <class T> struct SchlickRational {
   }
   // D(0) = 1/(π m²): D/D(0) = m⁵ x / (cosθ (m x² − x² + m²)²) (seed 001 Table 1, unit form).
   T unit(const T& cos_theta) const { return D(cos_theta) * T(kPi) * m * m; }
-  T P22(const T& x) const {
-    using std::sqrt;
-    const T c2 = T(1) / (T(1) + x);
-    return D(sqrt(c2)) * c2 * c2;
-  }
+  T P22(const T& x) const { return p22_from_d(*this, x); }
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // Exact inversion: with y = x², P(X² ≤ y) = m y/((m−1) y + m²), so y = u m²/(m − u(m−1)).

@@ -16,6 +16,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/vec.h"
 #include "brdfkit/models/param.h"
+#include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/ndf/scalar_chain.h"
 #include "brdfkit/ndf/theta_cdf.h"
 #include "brdfkit/shadowing/smith.h"
@@ -62,11 +63,7 @@ template <class T> struct Tabulated {
     return value[i] + w * (value[i + 1] - value[i]);
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / D(T(1)); }
-  T P22(const T& x) const {
-    using std::sqrt;
-    const T c2 = T(1) / (T(1) + x);
-    return D(sqrt(c2)) * c2 * c2;
-  }
+  T P22(const T& x) const { return p22_from_d(*this, x); }
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   Vec3d sample(const Vec2d& u) const
@@ -74,7 +71,7 @@ template <class T> struct Tabulated {
   {
     const Tabulated& self = *this;
     const ThetaCdf& cdf = cdf_->get([&self] {
-      return ThetaCdf([&](double t) { return 2 * kPi * self.D(std::cos(t)) * std::cos(t) * std::sin(t); }, self.theta.back());
+      return theta_cdf_of(self, self.theta.back());
     });
     return direction_from_theta(cdf.sample(u.x()), u.y());
   }

@@ -53,6 +53,11 @@ class ThetaCdf {
   std::vector<double> theta_, f_, cdf_;
 };
 
+// The θ density 2π D(θ) cosθ sinθ of a distribution's normals on [0, theta_max].
+template <class Ndf> ThetaCdf theta_cdf_of(const Ndf& ndf, double theta_max) {
+  return ThetaCdf([&](double t) { return 2 * kPi * ndf.D(std::cos(t)) * std::cos(t) * std::sin(t); }, theta_max);
+}
+
 // A CDF built on first use and shared by copies of a distribution: fitting constructs many
 // distributions that are never sampled, and sampling threads share one table.
 struct LazyThetaCdf {
