@@ -7,11 +7,11 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "brdfkit/analysis/chi2_test.h"
 #include "brdfkit/analysis/model_checks.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/fit/param_source.h"
 #include "brdfkit/models/microfacet_model.h"
 #include "brdfkit/models/model.h"
 #include "command.h"
@@ -20,47 +20,6 @@ namespace brdfkit::cli {
 namespace {
 
 constexpr int kChecksFailed = 3;  // exit code when a check fails (2 stays "bad input")
-
-double parse_number(const std::string& text, const std::string& where) {
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v)) throw InputError(where, "'" + text + "' is not a finite number");
-  return v;
-}
-
-// name=value (all channels), name[r|g|b]=value or name[0|1|2]=value, name=r,g,b.
-void apply_param(const ParamTable& table, ParamValues& values, const std::string& arg) {
-  const std::string where = "--param '" + arg + "'";
-  const size_t eq = arg.find('=');
-  if (eq == std::string::npos || eq == 0) throw InputError(where, "expected name=value, name[r|g|b]=value or name=r,g,b");
-  std::string name = arg.substr(0, eq);
-  const std::string value = arg.substr(eq + 1);
-  int channel = -1;
-  if (name.back() == ']') {
-    const size_t open = name.find('[');
-    const std::string ch = open == std::string::npos ? "" : name.substr(open + 1, name.size() - open - 2);
-    if (ch == "r" || ch == "0") channel = 0;
-    else if (ch == "g" || ch == "1") channel = 1;
-    else if (ch == "b" || ch == "2") channel = 2;
-    else throw InputError(where, "channel must be one of r, g, b (or 0, 1, 2)");
-    name = name.substr(0, open);
-  }
-  if (value.find(',') != std::string::npos) {
-    if (channel >= 0) throw InputError(where, "give one value with a channel index, or three without");
-    std::vector<std::string> parts;
-    std::stringstream ss(value);
-    for (std::string part; std::getline(ss, part, ',');) parts.push_back(part);
-    if (parts.size() != 3 || value.back() == ',') throw InputError(where, "expected three comma-separated values r,g,b");
-    for (int c = 0; c < 3; ++c) values.set(table, name, parse_number(parts[size_t(c)], where), c);
-    return;
-  }
-  values.set(table, name, parse_number(value, where), channel);
-}
 
 struct CheckOptions {
   std::string model;
@@ -75,8 +34,7 @@ struct CheckOptions {
 int run_check(const CheckOptions& o) {
   const Model& model = model_by_name(o.model);
   const ParamTable& table = model.params();
-  ParamValues values = ParamValues::defaults(table);
-  for (const auto& a : o.params) apply_param(table, values, a);
+  const ParamValues values = fit::params_from_args(table, o.params);
   if (o.samples < 1000) throw InputError("--samples", "must be at least 1000");
   for (double t : o.theta_o_deg)
     if (!(t >= 0 && t < 90)) throw InputError("--theta-o", fmt::format("{:g} is not in [0, 90) degrees", t));

@@ -1,16 +1,18 @@
-// `brdfkit fit FILE --model M [--metric X] [--starts N] [--seed S] -o fit.json [--json]`: fits a
-// model to measured data (DESIGN.md §8: variable projection for the colours, bounded Ceres for
-// the shape, seeded multi-start), prints the parameters, every metric's value, iterations and
-// time, and saves the fit atomically as JSON (fit/fit_record.h).
+// `brdfkit fit FILE --model M [--procedure P | --metric X] [--per-channel-shape] [--starts N]
+// [--seed S] -o fit.json [--json]`: fits a model to measured data, either with a procedure of
+// DESIGN.md §8 (whose metric is the fitting metric) or as a plain fit under a metric (variable
+// projection for the colours, bounded Ceres for the shape, seeded multi-start), prints the
+// parameters, every metric's value, iterations and time, and saves the fit atomically as JSON
+// (fit/fit_job.h, the same code `fit-all` runs for each material × model).
 #include <fmt/format.h>
 
 #include <iostream>
 #include <memory>
 
+#include "brdfkit/core/atomic_file.h"
 #include "brdfkit/fit/file_digest.h"
-#include "brdfkit/fit/fit_record.h"
+#include "brdfkit/fit/fit_job.h"
 #include "brdfkit/fit/metric_report.h"
-#include "brdfkit/fit/variable_projection.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
 
@@ -18,51 +20,50 @@ namespace brdfkit::cli {
 namespace {
 
 struct FitArgs {
-  std::string file, model, metric = "ngan", output, report;
+  std::string file, model, procedure, metric, output, report;
   int starts = 1, max_iterations = 100, coarsen = 1;
   std::uint64_t seed = 1;
-  bool json = false;
+  bool per_channel_shape = false, json = false, verbose = false;
 };
 
 int run_fit(const FitArgs& a) {
   const Model& model = model_by_name(a.model);
   const std::vector<std::string> report = fit::parse_metric_list(a.report);
-  fit::parse_metric_list(a.metric);  // names the metric before any work
+  fit::FitJobOptions opt;
+  opt.procedure = a.procedure;
+  opt.metric = a.metric;
+  opt.per_channel_shape = a.per_channel_shape;
+  opt.starts = a.starts;
+  opt.seed = a.seed;
+  opt.max_iterations = a.max_iterations;
+  opt.coarsen = a.coarsen;
+  if (a.verbose) opt.progress = [](std::string_view line) { std::cerr << line << std::endl; };
+  fit::validate(opt);  // names a bad option before any work
   const auto data = load_measured(a.file);
-  const fit::MetricOptions opt{a.coarsen};
-  const fit::Metric metric = fit::make_metric(a.metric, *data, opt);
-  fit::FitResult result;
+  fit::FitJobResult r;
   try {
-    result = fit::fit_model(model, metric, {a.starts, a.seed, a.max_iterations});
+    r = fit::run_fit_job(model, *data, a.file, fit::sha256_file(a.file), opt);
   } catch (const fit::FitError& e) {
     std::cerr << "brdfkit: fit failed: " << e.what() << "\n";
     return 1;
   }
-  fit::FitRecord rec;
-  rec.model = std::string(model.name());
-  rec.values = result.values;
-  rec.data_file = a.file;
-  rec.data_sha256 = fit::sha256_file(a.file);
-  rec.fit_metric = a.metric;
-  rec.starts = a.starts;
-  rec.seed = a.seed;
-  rec.iterations = result.iterations;
-  rec.seconds = result.seconds;
-  rec.converged = result.converged;
-  rec.message = result.message;
-  rec.coarsen = a.coarsen;
-  rec.metrics = fit::report_metrics(*data, model, result.values, report, opt);
-  fit::save_fit_record(a.output, rec);
+  fit::FitRecord& rec = r.record;
+  rec.metrics = fit::report_metrics(*data, model, rec.values, report, fit::MetricOptions{a.coarsen});
+  const nlohmann::json doc = fit::fit_job_json(r, opt);
+  write_file_atomically(a.output, doc.dump(2) + "\n");
   if (a.json) {
-    std::cout << fit::to_json(rec).dump(2) << "\n";
+    std::cout << doc.dump(2) << "\n";
     return 0;
   }
   std::cout << fmt::format("model      {}\n", rec.model);
   std::cout << fmt::format("data       {} (sha256 {})\n", rec.data_file, rec.data_sha256);
-  std::cout << fmt::format("fit        metric {}, {} start(s) from seed {}, best start {}, {} iterations, {:.3f} s, {}\n",
-                           a.metric, a.starts, a.seed, result.best_start, result.iterations, result.seconds,
-                           result.converged ? "converged" : "not converged: " + result.message);
-  std::cout << "parameters\n" << fit::format_params(model, result.values);
+  std::cout << fmt::format("fit        {}, {} shape, {} start(s) from seed {}, best start {}, {} iterations, {:.3f} s, {}\n",
+                           a.procedure.empty() ? "plain fit under metric " + rec.fit_metric
+                                               : "procedure " + a.procedure + " (metric " + rec.fit_metric + ")",
+                           a.per_channel_shape ? "per-channel" : "shared", a.starts, a.seed, r.fit.best_start,
+                           rec.iterations, rec.seconds, rec.converged ? "converged" : "not converged: " + rec.message);
+  for (const std::string& step : r.steps) std::cout << fmt::format("  step     {}\n", step);
+  std::cout << "parameters\n" << fit::format_params(model, rec.values);
   std::cout << "metrics\n" << fit::format_metrics(rec.metrics);
   std::cout << fmt::format("saved      {}\n", a.output);
   return 0;
@@ -73,8 +74,14 @@ const CommandRegistration reg("fit", [](CLI::App& app) {
   auto a = std::make_shared<FitArgs>();
   sub->add_option("FILE", a->file, "Measured BRDF (MERL .binary, RGL .bsdf, ...)")->required();
   sub->add_option("--model,-m", a->model, "Model to fit (see `brdfkit models`)")->required();
-  sub->add_option("--metric", a->metric, "Fitting metric: ngan, bagher, low-e1, low-e2 (hp-rmse is report-only)")
-      ->capture_default_str();
+  auto* proc = sub->add_option("--procedure", a->procedure,
+                               "Fitting procedure of the papers: ngan, bagher, low-e1, low-e2, hp-2step, hp-1step "
+                               "(DESIGN.md §8); its metric is the fitting metric");
+  auto* metric = sub->add_option("--metric", a->metric,
+                                 "Plain fit under this metric: ngan (default), bagher, low-e1, low-e2, hp-rmse");
+  proc->excludes(metric);
+  sub->add_flag("--per-channel-shape", a->per_channel_shape,
+                "Fit the lobe shape per channel instead of one shape for R, G, B");
   sub->add_option("--starts", a->starts, "Number of starts: the defaults, then seeded random ones")->capture_default_str();
   sub->add_option("--seed", a->seed, "Seed of the random starts")->capture_default_str();
   sub->add_option("--max-iterations", a->max_iterations, "Solver iterations per start")->capture_default_str();
@@ -84,6 +91,7 @@ const CommandRegistration reg("fit", [](CLI::App& app) {
       ->capture_default_str();
   sub->add_option("-o,--output", a->output, "Where to write the fit (JSON, written atomically)")->required();
   sub->add_flag("--json", a->json, "Print the saved JSON instead of a summary");
+  sub->add_flag("--verbose,-v", a->verbose, "Print the procedure's steps on stderr as they run");
   return [a]() { return run_fit(*a); };
 });
 

@@ -1,4 +1,5 @@
-// `brdfkit models [--json]`: every model of the catalogue with its parameter table.
+// `brdfkit models [NAME ...] [--json]`: every model of the catalogue (or the named ones, sums
+// "a+b" of models/lobe_sum.h included) with its parameter table.
 #include <fmt/format.h>
 
 #include <iostream>
@@ -10,9 +11,16 @@
 namespace brdfkit::cli {
 namespace {
 
-nlohmann::json models_json() {
+std::vector<const Model*> selected(const std::vector<std::string>& names) {
+  if (names.empty()) return {all_models().begin(), all_models().end()};
+  std::vector<const Model*> out;
+  for (const auto& n : names) out.push_back(&model_by_name(n));
+  return out;
+}
+
+nlohmann::json models_json(const std::vector<const Model*>& models) {
   nlohmann::json out = nlohmann::json::array();
-  for (const Model* m : all_models()) {
+  for (const Model* m : models) {
     nlohmann::json params = nlohmann::json::array();
     for (const auto& p : m->params())
       params.push_back({{"name", p.name},
@@ -31,13 +39,18 @@ nlohmann::json models_json() {
 const CommandRegistration reg("models", [](CLI::App& app) {
   auto* sub = app.add_subcommand("models", "List every model with its parameters, bounds and defaults");
   auto json = std::make_shared<bool>(false);
+  auto names = std::make_shared<std::vector<std::string>>();
+  sub->add_option("NAME", *names,
+                  "Models to show (default: the whole catalogue); a sum of models joined by '+' "
+                  "(e.g. cook-torrance-beckmann+cook-torrance-beckmann) shows its prefixed parameters");
   sub->add_flag("--json", *json, "Print JSON instead of a table");
-  return [json]() {
+  return [json, names]() {
+    const std::vector<const Model*> models = selected(*names);
     if (*json) {
-      std::cout << models_json().dump(2) << "\n";
+      std::cout << models_json(models).dump(2) << "\n";
       return 0;
     }
-    for (const Model* m : all_models()) {
+    for (const Model* m : models) {
       std::cout << fmt::format("{}  —  {}\n", m->name(), m->description());
       for (const auto& p : m->params())
         std::cout << fmt::format("    {:<10} [{:g}, {:g}] default {:g}  {}{}  {}\n", p.name, p.lower, p.upper, p.def,

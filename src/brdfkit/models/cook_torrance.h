@@ -91,15 +91,27 @@ struct CookTorrance {
     return eval_at(T(p[0] * T(kInvPi)), p[1], ndf, fresnel, wi.x(), wi.y(), wi.z(), wo.x(), wo.y(), wo.z());
   }
 
-  // ρ of one channel at n direction pairs given as structure-of-arrays; out[k] for pair k.
-  static void eval_batch(const double* p, int, std::size_t n, const double* wix, const double* wiy,
-                         const double* wiz, const double* wox, const double* woy, const double* woz,
-                         double* __restrict out) {
+  // ρ of one channel at n direction pairs given as structure-of-arrays; out[k] for pair k, the
+  // values of eval_at to the bit. The body is eval_at's without its early return: every lane
+  // computes, the horizon test selects at the end, and `&` (not `&&`) keeps the loads of wi_z
+  // and wo_z unconditional. A short-circuit test makes GCC sink the wo_z load under a branch; a
+  // load that "could trap" blocks if-conversion and leaves the loop scalar (DESIGN.md §12; check:
+  // -fopt-info-vec on a file that instantiates this, or bench/bench_model_eval.cpp).
+  static void eval_batch(const double* p, int, std::size_t n, const double* __restrict wix,
+                         const double* __restrict wiy, const double* __restrict wiz, const double* __restrict wox,
+                         const double* __restrict woy, const double* __restrict woz, double* __restrict out) {
     const Ndf<double> ndf(p + kNdfOffset);
     const Fresnel<double> fresnel(p + fresnel_offset());
     const double kd_pi = p[0] * kInvPi, ks = p[1];
-    for (std::size_t k = 0; k < n; ++k)
-      out[k] = eval_at(kd_pi, ks, ndf, fresnel, wix[k], wiy[k], wiz[k], wox[k], woy[k], woz[k]);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
+      const bool above = (iz > 0.0) & (oz > 0.0);
+      const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
+      const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
+      const double ch = hz / len, cd = 0.5 * len;
+      const double spec = fresnel.eval(cd) * ndf.D(ch) * masking(ndf, iz, oz, ch, cd) / (4.0 * iz * oz);
+      out[k] = above ? kd_pi + ks * spec : 0.0;
+    }
   }
   static void eval_batch(const double* p, int c, const SampleSet& s, double* out) {
     eval_batch(p, c, s.size(), s.wi_x.data(), s.wi_y.data(), s.wi_z.data(), s.wo_x.data(), s.wo_y.data(),

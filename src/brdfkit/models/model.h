@@ -7,9 +7,15 @@
 //   template <class T> static T eval(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo);
 //   static std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe);
 //   static double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi);
+// and optionally its own structure-of-arrays loop (when the plain loop over eval<double> does
+// not vectorize, e.g. terms that do not depend on the pair are hoisted out of it):
+//   static void eval_batch(const double* p, int c, size_t n, const double* wi_x, wi_y, wi_z,
+//                          wo_x, wo_y, wo_z, double* out);
 // where p holds channel c's value of every parameter (ParamValues::channel). `eval` is one
 // template for doubles, SIMD-friendly loops and Ceres Jets. ModelAdapter<M> turns such a type
-// into the runtime Model the CLI, reports and Python use; fitting instantiates M::eval<Jet>.
+// into the runtime Model the CLI, reports and Python use; fitting instantiates M::eval<Jet>, and
+// evaluates whole domains through Model::eval_batch (one virtual call per batch, DESIGN.md §12).
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <span>
@@ -20,6 +26,12 @@
 
 namespace brdfkit {
 
+// n direction pairs in structure-of-arrays form (DESIGN.md §12): pair k is
+// wi = (wi_x[k], wi_y[k], wi_z[k]), wo = (wo_x[k], wo_y[k], wo_z[k]), unit vectors.
+struct SoaPairs {
+  const double *wi_x, *wi_y, *wi_z, *wo_x, *wo_y, *wo_z;
+};
+
 class Model {
  public:
   virtual ~Model() = default;
@@ -29,6 +41,12 @@ class Model {
   virtual bool reciprocal() const = 0;
   // ρ(wi, wo) of channel c in sr⁻¹; wi towards the light, wo towards the viewer.
   virtual double eval(const double* p, int c, const Vec3d& wi, const Vec3d& wo) const = 0;
+  // out[k] = eval(p, c, wi_k, wo_k) for k < n, the same values. This default loops over the
+  // virtual eval; ModelAdapter<M> overrides it with M's inlined (vectorizable) loop.
+  virtual void eval_batch(const double* p, int c, std::size_t n, const SoaPairs& d, double* out) const {
+    for (std::size_t k = 0; k < n; ++k)
+      out[k] = eval(p, c, Vec3d(d.wi_x[k], d.wi_y[k], d.wi_z[k]), Vec3d(d.wo_x[k], d.wo_y[k], d.wo_z[k]));
+  }
   // Draws wi given wo (u uniform in [0,1)², u_lobe uniform in [0,1) picks a lobe); nullopt when
   // the draw lands below the horizon (its probability mass is part of pdf's deficit).
   virtual std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u,
@@ -46,6 +64,15 @@ template <class M> class ModelAdapter : public Model {
   bool reciprocal() const override { return M::kReciprocal; }
   double eval(const double* p, int c, const Vec3d& wi, const Vec3d& wo) const override {
     return M::template eval<double>(p, c, wi, wo);
+  }
+  void eval_batch(const double* p, int c, std::size_t n, const SoaPairs& d, double* out) const override {
+    if constexpr (requires { M::eval_batch(p, c, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out); }) {
+      M::eval_batch(p, c, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out);
+    } else {
+      for (std::size_t k = 0; k < n; ++k)
+        out[k] = M::template eval<double>(p, c, Vec3d(d.wi_x[k], d.wi_y[k], d.wi_z[k]),
+                                          Vec3d(d.wo_x[k], d.wo_y[k], d.wo_z[k]));
+    }
   }
   std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
     return M::sample(p, c, wo, u, u_lobe);

@@ -96,9 +96,8 @@ PublishedFits PublishedFits::read(const std::filesystem::path& file) {
   else if (out.lobe_ == "LowAshikhminShirley") out.model_ = "ashikhmin-shirley-dielectric";
   else if (out.lobe_ == "LowCookTorrance") out.model_ = "cook-torrance-low2012";
   else if (out.lobe_ == "Bagher") out.model_ = "cook-torrance-sgd-bagher2012";
-  else if (out.lobe_ == "LowMicrofacetFit") {
-    out.reason_ = "lobe 'LowMicrofacetFit' needs the Low 2012 microfacet model (seed 003 Eq. 15), not in the catalogue yet";
-  } else {
+  else if (out.lobe_ == "LowMicrofacetFit") out.model_ = "low-microfacet";
+  else {
     out.reason_ = "unknown lobe '" + out.lobe_ + "'";
   }
   return out;
@@ -146,6 +145,13 @@ Brdf PublishedFits::brdf(const std::string& material) const {
       // albedo·D'·G·F/(π ci co) with D' = π D_Beckmann (no 1/π in the file's D) = 4·albedo · D F G/(4 ci co).
       put(v, *m, "ks", scaled(channels(p, "albedo", lwhere), 4.0));
       put(v, *m, "alpha", channels(p, "roughness", lwhere));
+      put(v, *m, "eta", channels(p, "eta", lwhere));
+      have_lobe = true;
+    } else if (name == lobe_ && name == "LowMicrofacetFit") {
+      // conventions: A[c]·S·G·F/(π ci co); seed 003 Eq. 15 (the model) has no 1/π, so A = A[c]/π.
+      put(v, *m, "A", scaled(channels(p, "A", lwhere), kInvPi));
+      put(v, *m, "B", channels(p, "B", lwhere));
+      put(v, *m, "C", channels(p, "C", lwhere));
       put(v, *m, "eta", channels(p, "eta", lwhere));
       have_lobe = true;
     } else if (name == lobe_ && name == "Bagher") {

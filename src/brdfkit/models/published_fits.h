@@ -11,7 +11,8 @@
 //   Bagher               cook-torrance-sgd-bagher2012    ks = 4·albedo/π (seed 000 Eq. 1 vs seed 004 Eq. 1), alpha, p
 //                                                        per channel, F0/F1 = eta[0]/eta[1]; Smith G from the SGD Λ
 //                                                        in place of the file's fitted Eq. 9 approximation
-//   LowMicrofacetFit     unsupported (the Löw microfacet model is not in the catalogue)
+//   LowMicrofacetFit     low-microfacet                  A = A[c]/π (the file's lobe carries a 1/π that seed 003
+//                                                        Eq. 15 does not print), B, C, eta as published
 // plus the Lambertian albedo → kd everywhere. Values are loaded as published, even where a
 // fitting bound of the model is narrower (one Cook-Torrance roughness is 2.09 > 2).
 #include <filesystem>

@@ -1,13 +1,20 @@
 // The catalogue: every model brdfkit knows, in the order `brdfkit models` lists them.
+#include <map>
+#include <memory>
+#include <mutex>
 #include <string>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/models/cook_torrance_models.h"
 #include "brdfkit/models/ashikhmin_shirley.h"
 #include "brdfkit/models/blinn_phong_lobe.h"
+#include "brdfkit/models/he_torrance.h"
 #include "brdfkit/models/lafortune.h"
 #include "brdfkit/models/lambert.h"
+#include "brdfkit/models/lobe_sum.h"
 #include "brdfkit/models/low_smooth.h"
+#include "brdfkit/models/low_microfacet.h"
+#include "brdfkit/models/holzschuch_pacanowski.h"
 #include "brdfkit/models/published_fits.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
@@ -44,8 +51,11 @@ std::span<const Model* const> all_models() {
       instance<Lafortune2>(),
       instance<AshikhminShirley>(),
       instance<AshikhminShirleyDielectric>(),
+      instance<HeTorrance>(),
       instance<LowSmooth>(),
       instance<LowSmooth2>(),
+      low_microfacet_model(),
+      holzschuch_pacanowski_model(),
       low_cook_torrance_model(),
       bagher_sgd_model(),
   };
@@ -53,12 +63,24 @@ std::span<const Model* const> all_models() {
 }
 
 const Model& model_by_name(std::string_view name) {
+  // Sums "a+b+…" (models/lobe_sum.h) are built on first use and live as long as the program, as
+  // the registered models do, so a Brdf may keep a pointer to one.
+  if (LobeSum::is_sum_name(name)) {
+    static std::mutex mutex;
+    static std::map<std::string, std::unique_ptr<LobeSum>, std::less<>> sums;
+    const std::lock_guard lock(mutex);
+    if (auto it = sums.find(name); it != sums.end()) return *it->second;
+    auto sum = LobeSum::from_name(name);
+    const Model& m = *sum;
+    sums.emplace(std::string(name), std::move(sum));
+    return m;
+  }
   std::string known;
   for (const Model* m : all_models()) {
     if (m->name() == name) return *m;
     known += (known.empty() ? "" : ", ") + std::string(m->name());
   }
-  throw InputError("model '" + std::string(name) + "'", "unknown; known models: " + known);
+  throw InputError("model '" + std::string(name) + "'", "unknown; known models: " + known + " (and sums of them joined by '+')");
 }
 
 }  // namespace brdfkit

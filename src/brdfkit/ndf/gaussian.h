@@ -65,4 +65,11 @@ template <class T> struct Gaussian {
   std::shared_ptr<LazyThetaCdf> cdf_ = std::is_same_v<T, double> ? std::make_shared<LazyThetaCdf>() : nullptr;
 };
 
+// Smith Λ table over log m (for small m the distribution is Beckmann-like, a scale family).
+template <> struct SmithShape<Gaussian> {
+  static constexpr int kDims = 1;
+  static std::vector<SmithAxis> axes() { return {{1e-3, 1.5, 30, true}}; }
+  template <class T> static std::array<T, 1> values(const Gaussian<T>& d) { return {d.m}; }
+};
+
 }  // namespace brdfkit

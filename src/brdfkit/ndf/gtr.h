@@ -93,4 +93,13 @@ template <class T> struct Gtr {
   static bool abs_less(const T& x, double bound) { return x < T(bound) && x > T(-bound); }
 };
 
+// Smith Λ table over (log α, γ). Near α = 1 the shape changes as γ(1 − α²) (at α = 1 every γ is
+// the uniform distribution), fast at large γ: the α axis is fine, which costs nothing at start-up
+// since table nodes are integrated lazily (shadowing/smith_table.h).
+template <> struct SmithShape<Gtr> {
+  static constexpr int kDims = 2;
+  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 200, true}, {0.1, 10.0, 100, false}}; }
+  template <class T> static std::array<T, 2> values(const Gtr<T>& d) { return {d.alpha, d.gamma}; }
+};
+
 }  // namespace brdfkit

@@ -5,6 +5,7 @@
 // exactly 1: with y = x², 2π∫D cosθ dcosθ = m³ ∫₀^{m²} dy/((m−1)y + m²)² = 1.
 // Interface: see beckmann.h.
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
@@ -31,6 +32,13 @@ template <class T> struct SchlickRational {
   // D(0) = 1/(π m²): D/D(0) = m⁵ x / (cosθ (m x² − x² + m²)²) (seed 001 Table 1, unit form).
   T unit(const T& cos_theta) const { return D(cos_theta) * T(kPi) * m * m; }
   T P22(const T& x) const { return p22_from_d(*this, x); }
+  // Largest tan²θ of the support, cosθ_max = 1 − m: tan² = m(2 − m)/(1 − m)², unbounded at m ≥ 1.
+  // smith_lambda_integral integrates up to this edge (shadowing/smith_integral.h).
+  T tan2_max() const {
+    if (!(m < T(1))) return T(std::numeric_limits<double>::infinity());
+    const T c = T(1) - m;
+    return m * (T(2) - m) / (c * c);
+  }
   T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // Exact inversion: with y = x², P(X² ≤ y) = m y/((m−1) y + m²), so y = u m²/(m − u(m−1)).
@@ -47,6 +55,21 @@ template <class T> struct SchlickRational {
     requires std::is_same_v<T, double>
   {
     return D(mm.z()) * std::max(0.0, mm.z());
+  }
+};
+
+// Smith Λ table over log m, with the support edge: no facet is steeper than tanθ_max, cosθ_max
+// = 1 − m, so Λ = 0 for tanθ ≤ t_e = 1/tanθ_max = (1 − m)/sqrt(m(2 − m)), and near t_e Λ grows
+// like (t − t_e)^{7/2} (P22 vanishes linearly at the edge), which the table's log(t − t_e) axis
+// makes linear.
+template <> struct SmithShape<SchlickRational> {
+  static constexpr int kDims = 1;
+  static std::vector<SmithAxis> axes() { return {{1e-3, 1.0, 30, true}}; }
+  template <class T> static std::array<T, 1> values(const SchlickRational<T>& d) { return {d.m}; }
+  template <class T> static T tan_edge(const T* c) {
+    using std::sqrt;
+    if (!(c[0] < T(1))) return T(0);
+    return (T(1) - c[0]) / sqrt(c[0] * (T(2) - c[0]));
   }
 };
 

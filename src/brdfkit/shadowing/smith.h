@@ -10,17 +10,23 @@
 //   smith_g_correlated(ndf, ci, co)       1/(1 + Λ(i) + Λ(o))   (height-correlated option)
 //
 // How smith_lambda_numeric picks its method: a distribution template Ndf<T> for which
-// SmithShape<Ndf> is specialized (below; tests add their own) gets the table of
-// shadowing/smith_table.h, built lazily and thread-safely on first use over the box of
-// SmithShape<Ndf>::axes() and shared by all scalar types (double and every Jet); parameter
-// values outside that box, and distributions without a SmithShape, get the direct integral of
-// shadowing/smith_integral.h (correct, and Jet-differentiable, but ~100× slower).
+// SmithShape<Ndf> is specialized (below, in the distribution's header, or in tests) gets the
+// table of shadowing/smith_table.h, shared by all scalar types (double and every Jet), its nodes
+// integrated lazily and thread-safely on first use; coordinates outside the table's box, and
+// distributions without a SmithShape, get the direct integral of shadowing/smith_integral.h
+// (correct, and Jet-differentiable, but ~100× slower). Jets through a table get the derivative of
+// its interpolant (C¹ Catmull-Rom), so a central difference of the double evaluation agrees.
 //
 // A SmithShape<Ndf> specialization provides
-//   static constexpr int kDims;                                 1 to 3 shape parameters
-//   static std::vector<SmithAxis> axes();                       box and grid, in params() order
-//   template <class T> static std::array<T, kDims> values(const Ndf<T>&);   in params() order
-// and Ndf<double>(const double* p) must accept those values (the distribution's constructor).
+//   static constexpr int kDims;                                 1 to 3 table coordinates
+//   static std::vector<SmithAxis> axes();                       box and grid of the coordinates
+//   template <class T> static std::array<T, kDims> values(const Ndf<T>&);   the coordinates
+// and optionally
+//   static Ndf<double> make(const double* coords);              the distribution at coordinates;
+//                                                               default Ndf<double>(coords), i.e.
+//                                                               coordinates = params() values
+//   template <class T> static T tan_edge(const T* coords);      support edge t_e (Λ = 0 for
+//                                                               tanθ ≤ t_e), for compact supports
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -37,14 +43,26 @@ template <template <class> class Ndf> struct SmithShape {
   static constexpr int kDims = 0;
 };
 
-// The lazily built table of a distribution family (one per template, whatever the scalar type).
-// C++ function-local statics initialise exactly once, and other threads wait for it.
+// The table of a distribution family (one per template, whatever the scalar type), its nodes
+// built lazily. C++ function-local statics initialise exactly once, and other threads wait for it.
+template <template <class> class Ndf> Ndf<double> smith_shape_make(const double* coords) {
+  if constexpr (requires { SmithShape<Ndf>::make(coords); })
+    return SmithShape<Ndf>::make(coords);
+  else
+    return Ndf<double>(coords);
+}
 template <template <class> class Ndf> const SmithLambdaTable& smith_lambda_table() {
   using Shape = SmithShape<Ndf>;
-  static const SmithLambdaTable table(Shape::axes(), [](const double* p, double t) {
-    const Ndf<double> ndf(p);
-    return smith_lambda_integral(ndf, t);
-  });
+  SmithLambdaTable::EdgeFn edge;
+  if constexpr (requires(const double* c) { Shape::tan_edge(c); })
+    edge = [](const double* c) { return Shape::tan_edge(c); };
+  static const SmithLambdaTable table(
+      Shape::axes(),
+      [](const double* c, double t) {
+        const Ndf<double> ndf = smith_shape_make<Ndf>(c);
+        return smith_lambda_integral(ndf, t);
+      },
+      edge);
   return table;
 }
 
@@ -64,11 +82,11 @@ template <> struct SmithShape<Ggx> {
 };
 
 // The distributions of ndf/ without a closed-form Λ. Boxes cover each one's params() bounds;
-// node counts were chosen against the direct integral (tests/shadowing/test_smith_tables.cpp
-// prints the measured max |ΔG1| of each): scale parameters need few nodes, since along them
-// the table is exact up to the t½ shift. GTR (α, γ) and the Gaussian have no table yet: GTR
-// varies too fast in α near 1 at large γ for a log-α grid (1.5e-2 on G1 with 24 × 36 nodes), the
-// Gaussian's P22 is costly to build from; both use the direct integral.
+// node counts were chosen against the direct integral (tests/shadowing/test_smith_tables.cpp and
+// tests/microfacet_extra print the measured max |ΔG1| of each): scale parameters need few nodes,
+// since along them the table is exact up to the t½ shift. The shapes of Blinn-Phong, Gaussian,
+// GTR, Schlick rational, Sawicki rational and ABC facet sit in their own headers (their make()
+// needs the complete distribution type).
 template <class T> struct Sgd;
 template <class T> struct ExponentialPower;
 template <class T> struct Exponential;
@@ -103,14 +121,12 @@ U smith_lambda_numeric(const Ndf<T>& ndf, const U& tan_theta) {
   for (int k = 0; k < Shape::kDims; ++k) ps[k] = smith_detail::scalar(p[k]);
   const SmithLambdaTable& table = smith_lambda_table<Ndf>();
   if (!table.covers(ps)) return smith_lambda_integral(ndf, tan_theta);
-  if constexpr (std::is_same_v<T, U>) {
-    return table.lambda(p.data(), tan_theta);
-  } else {
-    // Jet tanθ with double parameters (or the reverse) interpolates in the Jet type.
-    std::array<U, Shape::kDims> pu;
-    for (int k = 0; k < Shape::kDims; ++k) pu[k] = U(p[k]);
-    return table.lambda(pu.data(), tan_theta);
-  }
+  // Jet tanθ with double parameters (or the reverse) interpolates in the Jet type.
+  std::array<U, Shape::kDims> pu;
+  for (int k = 0; k < Shape::kDims; ++k) pu[k] = U(p[k]);
+  U edge(0);
+  if constexpr (requires { Shape::tan_edge(pu.data()); }) edge = Shape::tan_edge(pu.data());
+  return table.lambda(pu.data(), tan_theta, edge);
 }
 
 template <class Ndf, class T> T smith_tan_theta(const T& cos_theta) {

@@ -15,6 +15,15 @@
 // ½ in w is accurate to ~1e-10 for smooth P22. A scalar scan over a wide w range finds where the
 // integrand lives; panels where it is negligible are skipped. The rule is fixed once the panels are
 // chosen, so Jets differentiate the quadrature sum exactly.
+//
+// Compact support (Schlick's rational distribution vanishes beyond tan²θ = x_max, and x_max moves
+// with its parameter): the integrand stops at s_max = sqrt(t² x_max − 1), with a kink there. Fixed
+// panels in w would put that kink inside a panel whose rule does not see the edge move, so the Jet
+// derivative missed the edge's motion (1e-4 relative in ∂/∂m). Instead the integral is
+// reparametrized to a fixed domain, s = s_max e^u with u ≤ 0: the panels end exactly at the edge
+// for every parameter value, and Jets differentiate through s_max (the Leibniz boundary term is
+// carried by the substitution; it is zero here anyway since P22 → 0 at the edge).
+// A distribution opts in by providing `T tan2_max() const` (x_max, +∞ when unbounded).
 #include <boost/math/quadrature/gauss.hpp>
 
 #include <algorithm>
@@ -34,49 +43,35 @@ template <class T> double scalar(const T& x) {
     return x.a;
 }
 
-// s − atan s without cancellation for small s (Taylor series, error < s¹¹/11).
-inline double s_minus_atan(double s) {
-  if (s < 1e-2) {
-    const double s2 = s * s;
-    return s * s2 * (1.0 / 3 - s2 * (1.0 / 5 - s2 * (1.0 / 7 - s2 / 9)));
+// s − atan s without cancellation for small s (Taylor series, error < s¹¹/11), for doubles and Jets.
+template <class T> T s_minus_atan(const T& s) {
+  using std::atan;
+  if (scalar(s) < 1e-2) {
+    const T s2 = s * s;
+    return s * s2 * (T(1.0 / 3) - s2 * (T(1.0 / 5) - s2 * (T(1.0 / 7) - s2 / T(9))));
   }
-  return s - std::atan(s);
+  return s - atan(s);
 }
 
 inline constexpr double kPanelWidth = 0.5;  // in w = log s
 inline constexpr int kGaussPoints = 10;
 
-}  // namespace smith_detail
-
-// Λ(tanθ) from ndf.P22 (any type with `U P22(const U& x) const`, U = T).
-template <class Ndf, class T> T smith_lambda_integral(const Ndf& ndf, const T& tan_theta) {
-  using std::exp;
-  using std::log;
-  namespace sd = smith_detail;
-  const double t0 = sd::scalar(tan_theta);
-  if (!(t0 > 0.0)) return T(0);
-  const T inv_t2 = T(1) / (tan_theta * tan_theta);
-  // Integrand in w = log s, including the Jacobian ds = s dw.
-  auto g = [&](double w) -> T {
-    const double s = std::exp(w);
-    const T x = (T(1) + T(s * s)) * inv_t2;
-    return ndf.P22(x) * T(s * s * sd::s_minus_atan(s));
-  };
-  // The features sit near s ~ 1 and s ~ (distribution width)·t; the scan window follows t.
-  const double lt = std::log(t0);
-  const double w_lo = -30.0 + std::min(0.0, lt), w_hi = 45.0 + std::max(0.0, lt);
-  const int n_panels = static_cast<int>(std::ceil((w_hi - w_lo) / sd::kPanelWidth));
+// ∫ g over [lo, hi] by Gauss-Legendre on panels of width kPanelWidth laid from `hi` downwards
+// (so a finite edge at `hi` is a panel edge), skipping panels where g is negligible.
+template <class T, class G> T integrate_log_panels(const G& g, double lo, double hi) {
+  const int n_panels = static_cast<int>(std::ceil((hi - lo) / kPanelWidth));
+  auto panel_lo = [&](int j) { return hi - (n_panels - j) * kPanelWidth; };
   std::vector<double> edge(n_panels + 1);
   double gmax = 0.0;
   for (int j = 0; j <= n_panels; ++j) {
-    edge[j] = std::abs(sd::scalar(g(w_lo + j * sd::kPanelWidth)));
+    edge[j] = std::abs(scalar(g(panel_lo(j))));
     if (!std::isfinite(edge[j])) edge[j] = 0.0;
     gmax = std::max(gmax, edge[j]);
   }
   if (!(gmax > 0.0)) return T(0);
   const double cut = 1e-20 * gmax;
   auto active = [&](int j) { return j >= 0 && j < n_panels && (edge[j] > cut || edge[j + 1] > cut); };
-  using Rule = boost::math::quadrature::gauss<double, sd::kGaussPoints>;
+  using Rule = boost::math::quadrature::gauss<double, kGaussPoints>;
   const auto& xs = Rule::abscissa();
   const auto& ws = Rule::weights();
   // log of an edge value, floored at the cut, to measure how steep a panel is.
@@ -89,9 +84,9 @@ template <class Ndf, class T> T smith_lambda_integral(const Ndf& ndf, const T& t
     // Steep panels (sharp cut-offs such as exp(−x^p) with large p, a step of width ~1/(2p) in w)
     // are split so that each piece spans at most a factor e⁴ of the integrand.
     const int pieces = std::clamp(static_cast<int>(std::ceil(std::abs(log_edge(j + 1) - log_edge(j)) / 4.0)), 1, 32);
-    const double width = sd::kPanelWidth / pieces, half = 0.5 * width;
+    const double width = kPanelWidth / pieces, half = 0.5 * width;
     for (int piece = 0; piece < pieces; ++piece) {
-      const double mid = w_lo + j * sd::kPanelWidth + (piece + 0.5) * width;
+      const double mid = panel_lo(j) + (piece + 0.5) * width;
       for (size_t i = 0; i < xs.size(); ++i) {
         if (xs[i] == 0.0) {
           sum += g(mid) * T(ws[i] * half);
@@ -101,7 +96,45 @@ template <class Ndf, class T> T smith_lambda_integral(const Ndf& ndf, const T& t
       }
     }
   }
-  return T(2) * inv_t2 * sum;
+  return sum;
+}
+
+}  // namespace smith_detail
+
+// Λ(tanθ) from ndf.P22 (any type with `U P22(const U& x) const`, U = T).
+template <class Ndf, class T> T smith_lambda_integral(const Ndf& ndf, const T& tan_theta) {
+  namespace sd = smith_detail;
+  const double t0 = sd::scalar(tan_theta);
+  if (!(t0 > 0.0)) return T(0);
+  const T inv_t2 = T(1) / (tan_theta * tan_theta);
+  // The features sit near s ~ 1 and s ~ (distribution width)·t; the scan window follows t.
+  const double lt = std::log(t0);
+  const double w_lo = -30.0 + std::min(0.0, lt), w_hi = 45.0 + std::max(0.0, lt);
+  if constexpr (requires { ndf.tan2_max(); }) {
+    const T x_max = ndf.tan2_max();
+    const double xm = sd::scalar(x_max);
+    if (std::isfinite(xm)) {
+      // Slopes r < 1/t mask nothing: the support must reach beyond them.
+      if (!(t0 * t0 * xm > 1.0)) return T(0);
+      using std::sqrt;
+      const T s_max = sqrt(tan_theta * tan_theta * x_max - T(1));
+      // In u = log(s/s_max) ≤ 0 (ds = s du), with s a T so that Jets see the edge move.
+      auto g = [&](double u) -> T {
+        const T s = s_max * T(std::exp(u));
+        const T x = (T(1) + s * s) * inv_t2;
+        return ndf.P22(x) * s * s * sd::s_minus_atan(s);
+      };
+      const double u_lo = std::min(-1.0, w_lo - std::log(sd::scalar(s_max)));
+      return T(2) * inv_t2 * sd::integrate_log_panels<T>(g, u_lo, 0.0);
+    }
+  }
+  // Integrand in w = log s, including the Jacobian ds = s dw.
+  auto g = [&](double w) -> T {
+    const double s = std::exp(w);
+    const T x = (T(1) + T(s * s)) * inv_t2;
+    return ndf.P22(x) * T(s * s * sd::s_minus_atan(s));
+  };
+  return T(2) * inv_t2 * sd::integrate_log_panels<T>(g, w_lo, w_hi);
 }
 
 }  // namespace brdfkit

@@ -24,10 +24,11 @@ double axis_value(const SmithAxis& a, int i) {
   return a.log_scale ? std::exp(std::log(a.lo) + u * (std::log(a.hi) - std::log(a.lo))) : a.lo + u * (a.hi - a.lo);
 }
 
-// log t½ with Λ(t½) = 1: Λ grows monotonically with t (from 0 to ∞), so a bracket in log t
-// expanded by factors of e² always closes; Boost's TOMS 748 then converges in ~10 evaluations.
-double log_t_half(const std::function<double(double)>& lambda_of_t) {
-  auto f = [&](double u) { return safe_log(lambda_of_t(std::exp(u))); };
+// log(t½ − t_e) with Λ(t½) = 1: Λ grows monotonically with t (from 0 at t_e to ∞), so a bracket
+// in u = log(t − t_e) expanded by steps of 2 always closes; Boost's TOMS 748 then converges in ~10
+// evaluations.
+double log_width(const std::function<double(double)>& lambda_of_t, double t_edge) {
+  auto f = [&](double u) { return safe_log(lambda_of_t(t_edge + std::exp(u))); };
   double lo = 0.0, hi = 0.0, flo = f(lo), fhi = flo;
   if (flo < 0.0) {
     while (fhi < 0.0) {
@@ -51,85 +52,72 @@ double log_t_half(const std::function<double(double)>& lambda_of_t) {
   return 0.5 * (r.first + r.second);
 }
 
-// Fills the padding of a row-major grid with dims `n` (padded sizes, real nodes 1..n−2) along
-// axis `axis` by quadratic extrapolation from the three nearest real nodes, so that the edge
-// cells interpolate as accurately as interior ones (Catmull-Rom reproduces quadratics; a linear
-// ghost node made the edge cells 30× worse on SGD).
-void pad_axis(std::vector<double>& g, const std::vector<int>& n, int axis) {
-  size_t stride = 1;
-  for (size_t k = axis + 1; k < n.size(); ++k) stride *= n[k];
-  size_t outer = 1;
-  for (int k = 0; k < axis; ++k) outer *= n[k];
-  const size_t len = n[axis];
-  for (size_t o = 0; o < outer; ++o)
-    for (size_t s = 0; s < stride; ++s) {
-      double* p = &g[o * len * stride + s];
-      p[0] = 3 * p[stride] - 3 * p[2 * stride] + p[3 * stride];
-      p[(len - 1) * stride] = 3 * p[(len - 2) * stride] - 3 * p[(len - 3) * stride] + p[(len - 4) * stride];
-    }
-}
-
 }  // namespace
 
-SmithLambdaTable::SmithLambdaTable(std::vector<SmithAxis> axes,
-                                   const std::function<double(const double*, double)>& lambda)
-    : axes_(std::move(axes)) {
+struct SmithLambdaTable::Node {
+  std::once_flag once;
+  double log_width = 0.0;
+  std::unique_ptr<double[]> row;  // nv_ entries
+};
+
+double SmithLambdaTable::log_width_of(const Node& n) { return n.log_width; }
+const double* SmithLambdaTable::row_of(const Node& n) { return n.row.get(); }
+
+SmithLambdaTable::SmithLambdaTable(std::vector<SmithAxis> axes, LambdaFn lambda, EdgeFn edge)
+    : axes_(std::move(axes)), lambda_(std::move(lambda)), edge_(std::move(edge)) {
   const int d = dims();
   if (d < 1 || d > kMaxDims) throw std::invalid_argument("SmithLambdaTable: 1 to 3 parameter axes");
   for (const auto& a : axes_)
-    if (a.n < 3 || !(a.hi > a.lo) || (a.log_scale && !(a.lo > 0.0)))
+    if (a.n < 4 || !(a.hi > a.lo) || (a.log_scale && !(a.lo > 0.0)))
       throw std::invalid_argument("SmithLambdaTable: bad axis");
-  const int real_nv = static_cast<int>(std::lround((kVHi - kVLo) / kVStep)) + 1;
-  nv_ = real_nv + 2;
-  size_t n_param_nodes = 1, n_padded = 1;
-  pn_.resize(d);
-  for (int k = 0; k < d; ++k) {
-    pn_[k] = axes_[k].n + 2;
-    n_param_nodes *= axes_[k].n;
-    n_padded *= pn_[k];
-  }
-  log_t_half_.assign(n_padded, 0.0);
-  log_lambda_.assign(n_padded * nv_, 0.0);
+  nv_ = static_cast<int>(std::lround((kVHi - kVLo) / kVStep)) + 1 + 2;
+  n_nodes_ = 1;
+  for (const auto& a : axes_) n_nodes_ *= size_t(a.n);
+  nodes_ = std::make_unique<Node[]>(n_nodes_);
+}
 
-  // The build runs inside a TBB arena isolation: a caller that is itself a TBB task (a parallel
-  // fit) must not steal an outer task that waits on this table's lazy initialisation.
+SmithLambdaTable::~SmithLambdaTable() = default;
+
+const SmithLambdaTable::Node& SmithLambdaTable::node(size_t flat) const {
+  Node& n = nodes_[flat];
+  std::call_once(n.once, [&] { build(flat, n); });
+  return n;
+}
+
+void SmithLambdaTable::build(size_t flat, Node& n) const {
+  const int d = dims();
+  double p[kMaxDims];
+  size_t rem = flat;
+  for (int k = d - 1; k >= 0; --k) {
+    p[k] = axis_value(axes_[k], static_cast<int>(rem % size_t(axes_[k].n)));
+    rem /= size_t(axes_[k].n);
+  }
+  const double t_edge = edge_ ? edge_(p) : 0.0;
+  auto lam = [&](double t) { return lambda_(p, t); };
+  const double lw = log_width(lam, t_edge);
+  auto row = std::make_unique<double[]>(size_t(nv_));
+  const int real_nv = nv_ - 2;
+  // The row's integrals run in parallel inside an arena isolation: a caller that is itself a TBB
+  // task (a parallel fit) must not steal an outer task that waits on this node's std::call_once.
   tbb::this_task_arena::isolate([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n_param_nodes), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t node = r.begin(); node != r.end(); ++node) {
-        double p[kMaxDims];
-        size_t rem = node, padded = 0;
-        int idx[kMaxDims];
-        for (int k = d - 1; k >= 0; --k) {
-          idx[k] = static_cast<int>(rem % axes_[k].n);
-          rem /= axes_[k].n;
-        }
-        for (int k = 0; k < d; ++k) {
-          p[k] = axis_value(axes_[k], idx[k]);
-          padded = padded * pn_[k] + (idx[k] + 1);
-        }
-        auto lam = [&](double t) { return lambda(p, t); };
-        const double lth = log_t_half(lam);
-        log_t_half_[padded] = lth;
-        double* row = &log_lambda_[padded * nv_];
-        for (int j = 0; j < real_nv; ++j) row[j + 1] = safe_log(lam(std::exp(lth + kVLo + j * kVStep)));
-        row[0] = 2 * row[1] - row[2];
-        row[nv_ - 1] = 2 * row[nv_ - 2] - row[nv_ - 3];
-      }
+    tbb::parallel_for(tbb::blocked_range<int>(0, real_nv, 16), [&](const tbb::blocked_range<int>& r) {
+      for (int j = r.begin(); j != r.end(); ++j) row[j + 1] = safe_log(lam(t_edge + std::exp(lw + kVLo + j * kVStep)));
     });
   });
-  // The v rows were padded linearly above: beyond the table log Λ is extrapolated linearly too.
-  std::vector<int> dims_p(pn_), dims_v(pn_);
-  dims_v.push_back(nv_);
-  for (int k = 0; k < d; ++k) {
-    pad_axis(log_t_half_, dims_p, k);
-    pad_axis(log_lambda_, dims_v, k);
-  }
+  // Beyond the table log Λ is extrapolated linearly: linear ghosts keep Catmull-Rom C¹ there.
+  row[0] = 2 * row[1] - row[2];
+  row[nv_ - 1] = 2 * row[nv_ - 2] - row[nv_ - 3];
+  n.log_width = lw;
+  n.row = std::move(row);
+  built_.fetch_add(1, std::memory_order_relaxed);
 }
 
-bool SmithLambdaTable::covers(const double* params) const {
+bool SmithLambdaTable::covers(const double* coords) const {
   for (int k = 0; k < dims(); ++k)
-    if (!(params[k] >= axes_[k].lo && params[k] <= axes_[k].hi)) return false;
+    if (!(coords[k] >= axes_[k].lo && coords[k] <= axes_[k].hi)) return false;
   return true;
 }
+
+size_t SmithLambdaTable::nodes_built() const { return built_.load(std::memory_order_relaxed); }
 
 }  // namespace brdfkit

@@ -1,23 +1,36 @@
 #pragma once
 // Tabulated Smith Λ over (distribution parameters, tanθ), so that Λ inside a fit costs tens of ns
 // instead of a quadrature (DESIGN.md §4: "tabulated … over a parameter grid, interpolated at run
-// time"). Built once per distribution type from smith_lambda_integral (shadowing/smith_integral.h).
+// time"). Values come from smith_lambda_integral (shadowing/smith_integral.h).
+//
+// Lazy nodes: a parameter node (its t½ and its row of log Λ over v) is integrated the first time
+// an interpolation touches it, once, thread-safely (std::call_once), and kept for the process.
+// A fit or a `brdfkit check` at fixed shape parameters therefore pays for the 4^d nodes around
+// them (d = number of shape parameters), not for the whole grid: grids can be fine where the
+// function needs it (GTR near α = 1) without costing start-up time.
 //
 // Coordinates, chosen so that the interpolated function is smooth and nearly separable:
-//  - each parameter on its own axis, logarithmic for scale-like parameters (α, σ) and linear for
-//    shape parameters (p, γ);
-//  - tanθ through v = log t − L(params), where L = log t½ and Λ(t½) = 1 (G1 = ½). For scale
+//  - each parameter on its own axis, logarithmic for scale-like parameters (α, σ, N + const) and
+//    linear for shape parameters (p, γ);
+//  - tanθ through v = log(t − t_e) − L(params), where L = log(t½ − t_e), Λ(t½) = 1 (G1 = ½) and
+//    t_e is the support edge (Λ = 0 for t ≤ t_e; 0 for every distribution with unbounded slopes,
+//    1/tanθ_max for Schlick's rational one, supplied in closed form so Jets carry it). For scale
 //    families (Λ(t; α) = Λ₁(α t): Beckmann, GGX, exponential, exponential power at fixed p) the
-//    table is then constant along the scale axis and L is linear in log α, so interpolation along
-//    that axis is exact; for SGD (α, p) and GTR (α, γ) the shift still aligns the transitions.
-//  - the tabulated value is log Λ: it is linear in v at both ends (log Λ ≈ v + const for t → ∞, and
-//    2v + const for power-law tails at t → 0), where the table is extrapolated linearly, and
-//    light tails (Beckmann) fall off so fast that G1 = 1 to double precision below the table.
-// Interpolation is Catmull-Rom (cubic) along every axis, edges padded by linear extrapolation,
-// so ceres::Jet parameters and tanθ carry continuous derivatives through the weights.
+//    table is then constant along the scale axis and L is linear in log α;
+//  - the tabulated value is log Λ: it is linear in v at both ends (log Λ ≈ v + const for t → ∞,
+//    and n·v + const for power-law behaviour at the low end, including (t − t_e)^{7/2} at a
+//    support edge), where the table is extrapolated linearly; light tails (Beckmann) fall off so
+//    fast that G1 = 1 to double precision below the table.
+// Interpolation is Catmull-Rom (cubic) along every axis, edge cells through a quadratic ghost node
+// (folded into the weights of the real nodes), so ceres::Jet parameters and tanθ carry continuous
+// derivatives: Jets get the derivative of the interpolant.
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "brdfkit/shadowing/smith_integral.h"
@@ -27,34 +40,46 @@ namespace brdfkit {
 struct SmithAxis {
   double lo;
   double hi;
-  int n;           // nodes, ≥ 2
+  int n;           // nodes, ≥ 4
   bool log_scale;  // interpolate in log(value)
 };
 
 class SmithLambdaTable {
  public:
   static constexpr int kMaxDims = 3;
-  // Grid in v = log t − log t½ and its spacing (accuracy target ~1e-5 on G1, DESIGN.md §4).
+  // Grid in v = log(t − t_e) − L and its spacing (accuracy target ~1e-5 on G1, DESIGN.md §4).
   static constexpr double kVLo = -6.0, kVHi = 6.0, kVStep = 0.075;
 
-  // lambda(params, t) must return Λ for the parameter values `params` (in axes order) and t = tanθ.
-  SmithLambdaTable(std::vector<SmithAxis> axes, const std::function<double(const double*, double)>& lambda);
+  // lambda(coords, t): Λ at table coordinates `coords` (in axes order) and t = tanθ.
+  // edge(coords): the support edge t_e (Λ = 0 for tanθ ≤ t_e); empty for unbounded slopes.
+  using LambdaFn = std::function<double(const double*, double)>;
+  using EdgeFn = std::function<double(const double*)>;
+  SmithLambdaTable(std::vector<SmithAxis> axes, LambdaFn lambda, EdgeFn edge = {});
+  ~SmithLambdaTable();
 
   int dims() const { return static_cast<int>(axes_.size()); }
   const std::vector<SmithAxis>& axes() const { return axes_; }
-  // Whether the parameter values lie inside the tabulated box (outside, callers integrate directly).
-  bool covers(const double* params) const;
+  // Whether the coordinates lie inside the tabulated box (outside, callers integrate directly).
+  bool covers(const double* coords) const;
+  // How many parameter nodes have been integrated so far (lazy build; for tests and reports).
+  size_t nodes_built() const;
 
-  template <class T> T lambda(const T* params, const T& tan_theta) const;
+  // Λ at coordinates `coords` and tanθ; t_edge is the same edge as edge(coords) in T (0 if none).
+  template <class T> T lambda(const T* coords, const T& tan_theta, const T& t_edge = T(0)) const;
 
  private:
-  // Padded grids: one extra node on each side of every axis (linear extrapolation), so the four
-  // Catmull-Rom neighbours of any cell exist.
+  struct Node;
+  // The node at real multi-index `flat` (row-major over the axes), integrated on first use.
+  const Node& node(size_t flat) const;
+  void build(size_t flat, Node& n) const;
+
   std::vector<SmithAxis> axes_;
-  std::vector<int> pn_;         // padded node count per parameter axis
-  int nv_ = 0;                  // padded v nodes
-  std::vector<double> log_t_half_;  // over the parameter grid
-  std::vector<double> log_lambda_;  // over the parameter grid × v, v fastest
+  LambdaFn lambda_;
+  EdgeFn edge_;
+  int nv_ = 0;  // v entries per row: real nodes plus one linear ghost at each end
+  std::unique_ptr<Node[]> nodes_;
+  size_t n_nodes_ = 0;
+  mutable std::atomic<size_t> built_{0};
 
   template <class T> static void catmull_rom(const T& f, T w[4]) {
     const T f2 = f * f, f3 = f2 * f;
@@ -63,52 +88,92 @@ class SmithLambdaTable {
     w[2] = T(0.5) * (T(-3) * f3 + T(4) * f2 + f);
     w[3] = T(0.5) * (f3 - f2);
   }
-  // Cell index (first of the 4 padded neighbours) and fractional weights along an axis of `n`
-  // real nodes, for the continuous real-node coordinate x (clamped to the grid).
-  template <class T> static int cell(const T& x, int n, T w[4]) {
-    int i = static_cast<int>(std::floor(smith_detail::scalar(x)));
-    i = std::clamp(i, 0, n - 2);
-    catmull_rom(T(x - T(i)), w);
-    return i;  // padded neighbours i .. i+3 = real nodes i−1 .. i+2
+  // Along a parameter axis of n ≥ 4 real nodes at continuous node coordinate x: the first of four
+  // consecutive real nodes and their weights. Catmull-Rom's outer neighbour beyond the first or
+  // last node is a ghost, the quadratic extrapolation 3f₀ − 3f₁ + f₂ (Catmull-Rom then reproduces
+  // quadratics in the edge cells too; a linear ghost made them 30× worse on SGD), folded into the
+  // weights of the real nodes.
+  // *zero_slot is the slot whose weight is structurally zero (−1 if none): its node is not touched.
+  template <class T> static int axis_weights(const T& x, int n, T w[4], int* zero_slot) {
+    const int i = std::clamp(static_cast<int>(std::floor(smith_detail::scalar(x))), 0, n - 2);
+    T c[4];
+    catmull_rom(T(x - T(double(i))), c);  // for nodes i−1 … i+2
+    *zero_slot = -1;
+    if (i == 0) {
+      *zero_slot = 3;
+      w[0] = c[1] + T(3) * c[0];
+      w[1] = c[2] - T(3) * c[0];
+      w[2] = c[3] + c[0];
+      w[3] = T(0);
+      return 0;
+    }
+    if (i == n - 2) {
+      *zero_slot = 0;
+      w[0] = T(0);
+      w[1] = c[0] + c[3];
+      w[2] = c[1] - T(3) * c[3];
+      w[3] = c[2] + T(3) * c[3];
+      return n - 4;
+    }
+    for (int k = 0; k < 4; ++k) w[k] = c[k];
+    return i - 1;
   }
+  // Row interpolation along v (padded rows: entry j + 1 is real v node j).
+  template <class T> static int v_cell(const T& x, int n, T w[4]) {
+    const int i = std::clamp(static_cast<int>(std::floor(smith_detail::scalar(x))), 0, n - 2);
+    catmull_rom(T(x - T(double(i))), w);
+    return i;  // padded entries i .. i+3 = real nodes i−1 .. i+2
+  }
+  // Scalar access for the template below (Node is defined in the .cpp).
+  static double log_width_of(const Node& n);
+  static const double* row_of(const Node& n);
 };
 
-template <class T> T SmithLambdaTable::lambda(const T* params, const T& tan_theta) const {
+template <class T> T SmithLambdaTable::lambda(const T* coords, const T& tan_theta, const T& t_edge) const {
   using std::exp;
   using std::log;
-  if (!(smith_detail::scalar(tan_theta) > 0.0)) return T(0);
+  const T dt = tan_theta - t_edge;
+  if (!(smith_detail::scalar(tan_theta) > 0.0) || !(smith_detail::scalar(dt) > 0.0)) return T(0);
   const int d = dims();
-  int base[kMaxDims] = {0, 0, 0};
+  int base[kMaxDims] = {0, 0, 0}, zero_slot[kMaxDims] = {-1, -1, -1};
   T w[kMaxDims][4];
   for (int k = 0; k < d; ++k) {
     const SmithAxis& a = axes_[k];
-    const T u = a.log_scale ? T((log(params[k]) - std::log(a.lo)) / (std::log(a.hi) - std::log(a.lo)))
-                            : T((params[k] - a.lo) / (a.hi - a.lo));
-    base[k] = cell(T(u * double(a.n - 1)), a.n, w[k]);
+    const T u = a.log_scale ? T((log(coords[k]) - std::log(a.lo)) / (std::log(a.hi) - std::log(a.lo)))
+                            : T((coords[k] - a.lo) / (a.hi - a.lo));
+    base[k] = axis_weights(T(u * double(a.n - 1)), a.n, w[k], &zero_slot[k]);
   }
-  // Σ over the 4^d parameter neighbours of weight × (grid value at offset `off` in the last axis).
-  const int combos = 1 << (2 * d);
-  auto blend = [&](const std::vector<double>& grid, int stride_last, auto&& inner) -> T {
-    T sum(0);
-    for (int c = 0; c < combos; ++c) {
-      size_t idx = 0;
-      T wt(1);
-      for (int k = 0; k < d; ++k) {
-        const int o = (c >> (2 * k)) & 3;
-        idx = idx * pn_[k] + (base[k] + o);
-        wt = wt * w[k][o];
-      }
-      sum += wt * inner(grid, idx * stride_last);
-    }
-    return sum;
+  // The (up to 4^d) parameter nodes around the coordinates and their weights. Folded edge weights
+  // that are structurally zero are skipped, so no node outside the stencil is ever built.
+  struct Term {
+    T weight;
+    const Node* node;
   };
-  const T log_t_half = blend(log_t_half_, 1, [](const std::vector<double>& g, size_t i) { return T(g[i]); });
-  const T v = log(tan_theta) - log_t_half;
-  const double real_nv = nv_ - 2;
+  std::array<Term, 64> terms;
+  int n_terms = 0;
+  const int combos = 1 << (2 * d);
+  for (int c = 0; c < combos; ++c) {
+    size_t flat = 0;
+    T wt(1);
+    bool skip = false;
+    for (int k = 0; k < d; ++k) {
+      const int o = (c >> (2 * k)) & 3;
+      skip = skip || o == zero_slot[k];
+      flat = flat * size_t(axes_[k].n) + size_t(base[k] + o);
+      wt = wt * w[k][o];
+    }
+    if (!skip) terms[n_terms++] = Term{wt, &node(flat)};
+  }
+  T log_width(0);
+  for (int j = 0; j < n_terms; ++j) log_width += terms[j].weight * log_width_of(*terms[j].node);
+  const T v = log(dt) - log_width;
+  const int real_nv = nv_ - 2;
   const T xv = (v - T(kVLo)) / T(kVStep);
-  // log Λ at real v node j, interpolated over the parameters.
-  auto at_node = [&](int j) {
-    return blend(log_lambda_, nv_, [&](const std::vector<double>& g, size_t i) { return T(g[i + j + 1]); });
+  // log Λ at real v node jv, interpolated over the parameters.
+  auto at_node = [&](int jv) {
+    T s(0);
+    for (int j = 0; j < n_terms; ++j) s += terms[j].weight * row_of(*terms[j].node)[jv + 1];
+    return s;
   };
   const double xs = smith_detail::scalar(xv);
   T log_lambda;
@@ -116,16 +181,17 @@ template <class T> T SmithLambdaTable::lambda(const T* params, const T& tan_thet
     const T f0 = at_node(0), f1 = at_node(1);
     log_lambda = f0 + (f1 - f0) * xv;
   } else if (xs > real_nv - 1) {
-    const int last = static_cast<int>(real_nv) - 1;
+    const int last = real_nv - 1;
     const T f0 = at_node(last - 1), f1 = at_node(last);
     log_lambda = f1 + (f1 - f0) * (xv - T(double(last)));
   } else {
     T wv[4];
-    const int iv = cell(xv, static_cast<int>(real_nv), wv);
-    log_lambda = blend(log_lambda_, nv_, [&](const std::vector<double>& g, size_t i) {
-      const double* p = &g[i + iv];
-      return wv[0] * p[0] + wv[1] * p[1] + wv[2] * p[2] + wv[3] * p[3];
-    });
+    const int iv = v_cell(xv, real_nv, wv);
+    log_lambda = T(0);
+    for (int j = 0; j < n_terms; ++j) {
+      const double* p = row_of(*terms[j].node) + iv;
+      log_lambda += terms[j].weight * (wv[0] * p[0] + wv[1] * p[1] + wv[2] * p[2] + wv[3] * p[3]);
+    }
   }
   return exp(log_lambda);
 }

@@ -1,0 +1,85 @@
+// `brdfkit eval MODEL [--param name=value ...] --wi θ,φ --wo θ,φ [--radians] [--json]` (or with
+// --params FILE [--material NAME]): ρ(wi, wo) per channel in sr⁻¹, wi towards the light and wo
+// towards the viewer in the local frame with the normal at θ = 0 (DESIGN.md §2). Angles are in
+// degrees unless --radians is given.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/fit/param_source.h"
+#include "command.h"
+
+namespace brdfkit::cli {
+namespace {
+
+struct EvalArgs {
+  std::string model, params_file, material;
+  std::vector<std::string> params;
+  std::vector<double> wi, wo;
+  bool radians = false;
+  bool json = false;
+};
+
+// (θ, φ) in the chosen unit → unit direction; θ ∈ [0, 90°] (above or on the horizon).
+Vec3d direction(const std::vector<double>& angles, bool radians, const std::string& option) {
+  if (angles.size() != 2) throw InputError(option, "expected two angles theta,phi");
+  for (double x : angles)
+    if (!std::isfinite(x)) throw InputError(option, "angles must be finite numbers");
+  const double to_rad = radians ? 1.0 : kPi / 180.0;
+  const double theta = angles[0] * to_rad, phi = angles[1] * to_rad;
+  if (!(theta >= 0 && theta <= kPi / 2 + 1e-12))
+    throw InputError(option, fmt::format("theta = {:g} {} is not in [0, {}] (the upper hemisphere)", angles[0],
+                                         radians ? "rad" : "deg", radians ? "pi/2" : "90"));
+  return spherical_direction(std::min(theta, kPi / 2), phi);
+}
+
+int run_eval(const EvalArgs& a) {
+  const Brdf brdf = fit::brdf_from_arguments(a.model, a.params, a.params_file, a.material);
+  const Vec3d wi = direction(a.wi, a.radians, "--wi"), wo = direction(a.wo, a.radians, "--wo");
+  const Rgb rho = brdf.eval(wi, wo);
+  if (a.json) {
+    const char* unit = a.radians ? "rad" : "deg";
+    nlohmann::json out = {{"model", brdf.model().name()},
+                          {"wi", {{"theta", a.wi[0]}, {"phi", a.wi[1]}, {"unit", unit}}},
+                          {"wo", {{"theta", a.wo[0]}, {"phi", a.wo[1]}, {"unit", unit}}},
+                          {"rho", nlohmann::json::array()}};
+    // JSON has no NaN: a non-finite value is written as null (and the exit code says so).
+    for (int c = 0; c < 3; ++c) out["rho"].push_back(std::isfinite(rho[c]) ? nlohmann::json(rho[c]) : nlohmann::json());
+    if (!a.material.empty()) out["material"] = a.material;
+    const ParamTable& t = brdf.model().params();
+    nlohmann::json pj = nlohmann::json::object();
+    for (size_t i = 0; i < t.size(); ++i)
+      pj[t[i].name] = {brdf.values().values[0][i], brdf.values().values[1][i], brdf.values().values[2][i]};
+    out["params"] = pj;
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << fmt::format("{:.10g} {:.10g} {:.10g}\n", rho[0], rho[1], rho[2]);
+  }
+  if (!rho.allFinite())
+    throw InputError(fmt::format("model '{}'", brdf.model().name()), "the BRDF is not finite at these directions");
+  return 0;
+}
+
+const CommandRegistration reg("eval", [](CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "eval", "Print rho(wi, wo) in 1/sr for R, G, B of a model with given parameters (MODEL --param ..., or "
+              "--params FILE [--material NAME])");
+  auto a = std::make_shared<EvalArgs>();
+  sub->add_option("model", a->model, "Model name (see `brdfkit models`; sums such as a+b allowed)");
+  sub->add_option("--param", a->params,
+                  "name=value (all channels), name[r|g|b]=value (one channel) or name=r,g,b; repeatable; overrides "
+                  "the values of --params");
+  sub->add_option("--params,-p", a->params_file, "A fit saved by `brdfkit fit`, or a published-fits file");
+  sub->add_option("--material", a->material, "The material of a published-fits file");
+  sub->add_option("--wi", a->wi, "Direction towards the light: theta,phi")->required()->delimiter(',')->expected(2);
+  sub->add_option("--wo", a->wo, "Direction towards the viewer: theta,phi")->required()->delimiter(',')->expected(2);
+  sub->add_flag("--radians,!--degrees", a->radians, "Angles in radians (--degrees, the default: in degrees)");
+  sub->add_flag("--json", a->json, "Print JSON (model, directions, parameters, rho)");
+  return [a]() { return run_eval(*a); };
+});
+
+}  // namespace
+}  // namespace brdfkit::cli

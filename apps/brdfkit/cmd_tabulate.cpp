@@ -1,0 +1,101 @@
+// `brdfkit tabulate MODEL [--param name=value ...] -o FILE.binary` and
+// `brdfkit tabulate --params fit.json|published.json [--material NAME] -o FILE.binary`: any model
+// with given parameters as a MERL-format file (DESIGN.md §2; measured/merl_tabulate.h fills every
+// cell by index at its centre, cells below the horizon are written as raw −1), written
+// atomically. A BRDF that is not finite, or negative, in any cell above the horizon is refused
+// with the number of such cells: a negative value would silently become a "not measured" cell.
+// `--clamp-negative` stores max(0, ρ) instead and says how many cells it clamped.
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/fit/param_source.h"
+#include "brdfkit/measured/merl.h"
+#include "brdfkit/measured/merl_tabulate.h"
+#include "command.h"
+
+namespace brdfkit::cli {
+namespace {
+
+struct TabulateArgs {
+  std::string model, params_file, material, output;
+  std::vector<std::string> params;
+  bool clamp_negative = false;
+  bool json = false;
+};
+
+int run_tabulate(const TabulateArgs& a) {
+  if (a.output.empty()) throw InputError("-o", "an output file is required");
+  const Brdf brdf = fit::brdf_from_arguments(a.model, a.params, a.params_file, a.material);
+  std::atomic<size_t> non_finite{0}, negative{0};
+  const merl::Table table = merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) {
+    Rgb v = brdf.eval(wi, wo);
+    if (!v.allFinite()) {
+      ++non_finite;
+      return Rgb(Rgb::Zero());  // counted; refused below
+    }
+    if ((v.array() < 0).any()) {
+      ++negative;
+      v = v.cwiseMax(0.0);
+    }
+    return v;
+  });
+  const std::string what = fmt::format("model '{}'", brdf.model().name());
+  if (non_finite > 0)
+    throw InputError(what, fmt::format("the BRDF is NaN or infinite in {} of the {} cells above the horizon; "
+                                       "nothing written",
+                                       non_finite.load(), table.valid_count()));
+  if (negative > 0 && !a.clamp_negative)
+    throw InputError(what, fmt::format("the BRDF is negative in {} cells (they would read as 'not measured'); "
+                                       "nothing written (--clamp-negative stores max(0, rho) instead)",
+                                       negative.load()));
+  merl::write(a.output, table);
+
+  Rgb peak = Rgb::Zero();
+  for (size_t k = 0; k < merl::kCellCount; ++k)
+    if (table.valid(k)) peak = peak.cwiseMax(table.value(k));
+  const size_t valid = table.valid_count();
+  if (a.json) {
+    nlohmann::json out = {{"output", a.output},
+                          {"model", brdf.model().name()},
+                          {"cells", merl::kCellCount},
+                          {"cells_written", valid},
+                          {"cells_below_horizon", merl::kCellCount - valid},
+                          {"cells_clamped", negative.load()},
+                          {"max_rho", {peak[0], peak[1], peak[2]}}};
+    if (!a.material.empty()) out["material"] = a.material;
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << fmt::format("wrote {}: {}{}\n", a.output, brdf.model().name(),
+                           a.material.empty() ? "" : " (material " + a.material + ")");
+  std::cout << fmt::format("cells   {} written, {} below the horizon (raw -1){}\n", valid, merl::kCellCount - valid,
+                           negative > 0 ? fmt::format(", {} clamped from negative to 0", negative.load()) : "");
+  std::cout << fmt::format("max rho {:.6g} {:.6g} {:.6g} (1/sr)\n", peak[0], peak[1], peak[2]);
+  return 0;
+}
+
+const CommandRegistration reg("tabulate", [](CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "tabulate",
+      "Write a model with given parameters (MODEL --param ..., or --params FILE [--material NAME]) as a MERL-format "
+      ".binary file");
+  auto a = std::make_shared<TabulateArgs>();
+  sub->add_option("model", a->model, "Model name (see `brdfkit models`; sums such as a+b allowed)");
+  sub->add_option("--param", a->params,
+                  "name=value (all channels), name[r|g|b]=value (one channel) or name=r,g,b; repeatable; overrides "
+                  "the values of --params");
+  sub->add_option("--params,-p", a->params_file, "A fit saved by `brdfkit fit`, or a published-fits file");
+  sub->add_option("--material", a->material, "The material of a published-fits file");
+  sub->add_option("-o,--output", a->output, "Output MERL .binary file (written atomically)")->required();
+  sub->add_flag("--clamp-negative", a->clamp_negative, "Store negative BRDF values as 0 instead of refusing");
+  sub->add_flag("--json", a->json, "Print JSON");
+  return [a]() { return run_tabulate(*a); };
+});
+
+}  // namespace
+}  // namespace brdfkit::cli

@@ -1,0 +1,42 @@
+#pragma once
+// Tabulated microfacet-distribution estimation from a measured BRDF (seed 002 §5.1, after
+// Ashikhmin et al. 2000): with the masking fixed, ρ is linear in the table of D, so D (and the
+// diffuse colour) are solved by linear least squares; then the masking is recomputed from the new
+// D, and the two steps alternate (the paper starts from a constant masking and needs "about five
+// or less iterations"). Fresnel is Schlick, with F0 given or fitted in an outer 1-D search (the
+// paper's "optimization in the outermost loop").
+//
+// The least squares are those of a metric (fit/metric.h: the `ngan` metric by default), so the
+// estimate minimizes the error that is reported for it. One D is shared by R, G, B (ks and kd
+// are per channel): for fixed per-channel ks the problem is linear in (kd, D); for fixed D it is
+// linear in (kd, ks): the two solves alternate inside each masking iteration.
+#include <optional>
+#include <vector>
+
+#include "brdfkit/analysis/tabulated_cook_torrance.h"
+#include "brdfkit/fit/metric.h"
+
+namespace brdfkit::analysis {
+
+struct NdfEstimationOptions {
+  int nodes = 90;             // table angles θ_j = (j/(n−1))² π/2: dense near θ = 0, as MERL's θh axis
+  int max_iterations = 5;     // masking recomputations (seed 002 §5.1: ≤ 5)
+  std::optional<double> f0;   // Schlick F0 given; nullopt: fitted (Brent on the least-squares residual)
+  double smoothing = 1e-6;    // weight of the second-difference penalty on D, relative to the data term
+  double tolerance = 1e-3;    // stop when D changes by less than this (max relative change at the peak scale)
+};
+
+struct NdfEstimate {
+  std::vector<double> theta;            // table angles, radians
+  std::vector<double> d;                // normalized D at those angles
+  ParamValues values;                   // kd, ks, F0 of TabulatedCookTorrance
+  int iterations = 0;                   // masking recomputations done
+  double f0 = 0;
+  std::vector<double> residual_history; // metric value after each masking iteration
+  TabulatedCookTorrance model() const { return TabulatedCookTorrance(theta, d); }
+};
+
+// Throws InputError when the metric has no samples or the estimate degenerates (no specular signal).
+NdfEstimate estimate_tabulated_ndf(const fit::Metric& metric, const NdfEstimationOptions& opt = {});
+
+}  // namespace brdfkit::analysis

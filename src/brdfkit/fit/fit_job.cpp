@@ -1,0 +1,126 @@
+#include "brdfkit/fit/fit_job.h"
+
+#include <cmath>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/fit/metric_report.h"
+#include "brdfkit/fit/procedure.h"
+
+namespace brdfkit::fit {
+
+void validate(const FitJobOptions& opt) {
+  if (!opt.procedure.empty()) procedure_metric(opt.procedure);  // InputError listing the known ids
+  if (!opt.metric.empty()) parse_metric_list(opt.metric);       // InputError listing the known ids
+  if (opt.metric.find(',') != std::string::npos) throw InputError("--metric", "names one fitting metric");
+  if (opt.starts < 1) throw InputError("--starts", "must be >= 1");
+  if (opt.coarsen < 1) throw InputError("--coarsen", "must be >= 1");
+  if (opt.max_iterations < 1) throw InputError("--max-iterations", "must be >= 1");
+}
+
+std::string fitting_metric(const FitJobOptions& opt) {
+  if (!opt.metric.empty()) return opt.metric;
+  if (!opt.procedure.empty()) return std::string(procedure_metric(opt.procedure));
+  return "ngan";
+}
+
+FitJobResult run_fit_job(const Model& model, const MeasuredBrdf& data, const std::string& file,
+                         const std::string& sha256, const FitJobOptions& opt) {
+  validate(opt);
+  ProcedureOptions po;
+  po.starts = opt.starts;
+  po.seed = opt.seed;
+  po.max_iterations = opt.max_iterations;
+  po.coarsen = opt.coarsen;
+  po.metric = opt.metric;
+  po.per_channel_shape = opt.per_channel_shape;
+  po.progress = opt.progress;
+  // A plain fit under a metric is the `ngan` preset with its metric replaced: variable projection
+  // of the colours inside a bounded fit of the shape (DESIGN.md §8).
+  if (opt.procedure.empty() && po.metric.empty()) po.metric = "ngan";
+  ProcedureResult pr = run_procedure(opt.procedure.empty() ? "ngan" : opt.procedure, model, data, po);
+  FitJobResult r;
+  r.fit = pr.fit;
+  r.steps = std::move(pr.steps);
+  FitRecord& rec = r.record;
+  rec.model = std::string(model.name());
+  rec.values = pr.fit.values;
+  rec.data_file = file;
+  rec.data_sha256 = sha256;
+  rec.fit_metric = pr.metric.empty() ? fitting_metric(opt) : pr.metric;
+  rec.starts = opt.starts;
+  rec.seed = opt.seed;
+  rec.iterations = pr.fit.iterations;
+  rec.seconds = pr.fit.seconds;
+  rec.converged = pr.fit.converged;
+  rec.message = pr.fit.message;
+  rec.coarsen = opt.coarsen;
+  for (const auto& channel : rec.values.values)
+    for (double x : channel)
+      if (!std::isfinite(x)) throw FitError("the fit produced a non-finite parameter value");
+  return r;
+}
+
+nlohmann::json fit_job_json(const FitJobResult& r, const FitJobOptions& opt, const std::string& material) {
+  nlohmann::json j = to_json(r.record);
+  j["fit"]["procedure"] = opt.procedure.empty() ? nlohmann::json(nullptr) : nlohmann::json(opt.procedure);
+  j["fit"]["per_channel_shape"] = opt.per_channel_shape;
+  j["fit"]["max_iterations"] = opt.max_iterations;
+  j["fit"]["best_start"] = r.fit.best_start;
+  j["fit"]["steps"] = r.steps;
+  if (!material.empty()) j["data"]["material"] = material;
+  return j;
+}
+
+namespace {
+
+template <class T> bool field_is(const nlohmann::json& obj, const char* key, const T& want) {
+  if (!obj.is_object() || !obj.contains(key)) return false;
+  try {
+    return obj.at(key).get<T>() == want;
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+bool fit_job_matches(const nlohmann::json& saved, const std::string& model, const std::string& sha256,
+                     const FitJobOptions& opt, const std::vector<std::string>& report) {
+  if (!saved.is_object() || !field_is<std::string>(saved, "format", "brdfkit-fit")) return false;
+  if (!field_is<std::string>(saved, "brdfkit_version", BRDFKIT_VERSION)) return false;
+  if (!field_is<std::string>(saved, "model", model)) return false;
+  if (!saved.contains("data") || !field_is<std::string>(saved["data"], "sha256", sha256)) return false;
+  if (!field_is<int>(saved, "grid_coarsen", opt.coarsen)) return false;
+  if (!saved.contains("fit")) return false;
+  const auto& f = saved["fit"];
+  if (!f.is_object() || !f.contains("procedure")) return false;
+  if (opt.procedure.empty() ? !f["procedure"].is_null() : !field_is<std::string>(f, "procedure", opt.procedure))
+    return false;
+  if (!field_is<std::string>(f, "metric", fitting_metric(opt)) || !field_is<int>(f, "starts", opt.starts) ||
+      !field_is<std::uint64_t>(f, "seed", opt.seed) || !field_is<int>(f, "max_iterations", opt.max_iterations) ||
+      !field_is<bool>(f, "per_channel_shape", opt.per_channel_shape))
+    return false;
+  // Values: the model's parameters, each three finite numbers (a truncated or edited file is refitted).
+  const Model* m = nullptr;
+  try {
+    m = &model_by_name(model);
+  } catch (const InputError&) {
+    return false;
+  }
+  const auto& params = saved.contains("params") ? saved["params"] : nlohmann::json();
+  if (!params.is_array() || params.size() != m->params().size()) return false;
+  for (size_t i = 0; i < params.size(); ++i) {
+    if (!field_is<std::string>(params[i], "name", m->params()[i].name)) return false;
+    const auto& v = params[i].contains("values") ? params[i]["values"] : nlohmann::json();
+    if (!v.is_array() || v.size() != 3) return false;
+    for (const auto& x : v)
+      if (!x.is_number() || !std::isfinite(x.get<double>())) return false;
+  }
+  const auto& metrics = saved.contains("metrics") ? saved["metrics"] : nlohmann::json();
+  if (!metrics.is_object()) return false;
+  for (const std::string& id : report)
+    if (!metrics.contains(id) || !(metrics[id].is_number() || metrics[id].is_null())) return false;
+  return true;
+}
+
+}  // namespace brdfkit::fit

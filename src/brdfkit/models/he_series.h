@@ -1,0 +1,88 @@
+#pragma once
+// The directional-diffuse series of He, Torrance, Sillion & Greenberg 1991 (Eq. 78):
+//   Σ_{m≥1} t_m,   t_m = e^{−g} gᵐ/(m!·m) · exp(−c/m),   c = τ² v_xy²/4,
+// summed with a rigorous bound on what it leaves out.
+//
+// Terms are formed in log space, log t_m = −g + m ln g − ln m! − ln m − c/m, because for rough
+// surfaces (g in the hundreds) e^{−g} underflows while gᵐ/m! overflows.
+//
+// Truncation rule (why it is safe): the summation starts near the Poisson mode m ≈ g and walks
+// outwards in both directions. Going up, the ratio r_m = t_{m+1}/t_m = g m/(m+1)² · e^{c/(m(m+1))}
+// decreases with m, so once r_M < 1 every omitted term is below t_M r_Mʲ and the whole tail is
+// ≤ t_M r_M/(1 − r_M). Going down, t_{j−1}/t_j ≤ j²/(g (j−1)) ≤ q_m := m²/(g (m−1)) for
+// 2 ≤ j ≤ m, so once q_m < 1 the head below m is ≤ t_m q_m/(1 − q_m). Each walk stops when its
+// bound is ≤ rel_tol/2 of the partial sum; the omitted part is then ≤ rel_tol of the sum (this is
+// stricter than Radiance's He.cal, which stops when one term is < 10⁻⁶: DESIGN.md §6).
+// The bound is reported so tests can compare it with the error actually made.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "brdfkit/ndf/scalar_chain.h"
+
+namespace brdfkit {
+
+struct HeSeriesStats {
+  int terms = 0;              // terms summed
+  double omitted_bound = 0;   // upper bound on Σ of the omitted terms, relative to the sum
+};
+
+// Σ t_m of He et al. 1991 Eq. 78 (without its π²τ²/(4λ²) prefactor), g ≥ 0, c ≥ 0.
+// T is double or a ceres::Jet: the walk is steered by the values, the terms carry derivatives.
+template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, HeSeriesStats* stats = nullptr) {
+  using std::exp;
+  using std::log;
+  const double gv = value_of(g), cv = value_of(c);
+  if (!(gv > 0)) {
+    if (stats) *stats = {0, 0.0};
+    return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
+  }
+  const T log_g = log(g);
+  auto log_term = [&](int m) { return -g + double(m) * log_g - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m); };
+  const double lgv = std::log(gv);
+  // log r_m (up) and log q_m (down), in doubles: they only steer the walk.
+  auto log_up_ratio = [&](int m) { return lgv + std::log(double(m)) - 2 * std::log(m + 1.0) + cv / (double(m) * (m + 1.0)); };
+  auto log_down_ratio = [&](int m) { return 2 * std::log(double(m)) - lgv - std::log(m - 1.0); };
+  // Geometric tail t·r/(1 − r) for log r < 0.
+  auto tail = [](double t, double log_r) { const double r = std::exp(log_r); return t * r / (1 - r); };
+
+  const int kMaxTerms = 1000000;  // never reached for g within the model's bounds (g < 10⁴)
+  const int start = std::max(1, int(std::lround(gv)));
+  const T first = exp(log_term(start));
+  T sum = first;
+  int terms = 1;
+  double up_bound = std::numeric_limits<double>::infinity(), down_bound = 0;
+  // Upwards.
+  T t = first;
+  for (int m = start; terms < kMaxTerms; ++m) {
+    const double lr = log_up_ratio(m);
+    if (lr < 0) {
+      up_bound = tail(value_of(t), lr);
+      if (up_bound <= 0.5 * rel_tol * value_of(sum)) break;
+    }
+    t = exp(log_term(m + 1));
+    sum += t;
+    ++terms;
+  }
+  // Downwards.
+  t = first;
+  for (int m = start; m > 1 && terms < kMaxTerms; --m) {
+    const double lq = log_down_ratio(m);
+    if (lq < 0) {
+      down_bound = tail(value_of(t), lq);
+      if (down_bound <= 0.5 * rel_tol * value_of(sum)) break;
+    }
+    t = exp(log_term(m - 1));
+    sum += t;
+    ++terms;
+    down_bound = 0;  // reaching m = 1 leaves nothing below
+  }
+  if (stats) {
+    const double s = value_of(sum);
+    stats->terms = terms;
+    stats->omitted_bound = s > 0 ? (up_bound + down_bound) / s : 0.0;
+  }
+  return sum;
+}
+
+}  // namespace brdfkit

@@ -1,0 +1,111 @@
+#pragma once
+// He, Torrance, Sillion & Greenberg 1991, "A Comprehensive Physical Model for Light Reflection"
+// (SIGGRAPH '91), the unpolarized isotropic model of its appendix (Eq. 69–86), as compared in
+// seed 002 (DESIGN.md §6):
+//   ρ = kd/π  +  ks · F G S D / (π cosθi cosθr)  [+ the specular spike, see below]
+// with, for channel c at wavelength λ = kChannelWavelengthUm[c] (µm) and k = 2π/λ:
+//   F  Fresnel reflectance of the complex index η + i k at the bisector angle, cos = |wi + wo|/2
+//      (fresnel/conductor.h; k = 0 is a dielectric);
+//   G  = (v·v / v_z)², v = wi + wo (Eq. 76: the polarization brackets of the unpolarized case
+//      equal |k̂i × k̂r|² each and cancel the 1/|k̂i × k̂r|⁴);
+//   S  = S(θi) S(θr), Smith shadowing with He's errata (he_shadowing.h, Eq. 23–25);
+//   D  = π²τ²/(4λ²) Σ_{m≥1} e^{−g} gᵐ/(m!·m) exp(−τ² v_xy²/(4m))   (Eq. 78, he_series.h),
+//      g = (k σ (cosθi + cosθr))² (Eq. 79) with σ the effective roughness (Eq. 80–83), and
+//      v_xy = k |(wi + wo)_xy| — the wave vector k(k̂r − k̂i), as in Westin's reference code and
+//      Radiance's He.cal. (Reading v as a unit-less difference of unit vectors, as BBM's "he"
+//      variant does, is not dimensionally consistent: τ² v_xy² must be unit-less.) With this
+//      reading the rough limit g ≫ 1 is exactly Cook-Torrance with a Beckmann distribution of
+//      α = 2σ/τ and Fresnel F, and the smooth limit conserves energy with the spike; both are
+//      tested (tests/catalogue_he).
+// kd is He's uniform-diffuse term a(λ) as an albedo (Lambertian, DESIGN.md §6). ks scales the
+// directional-diffuse term: 1 is He's physical model; seed 002 §3.1 fits a free colour scale.
+//
+// The specular spike (Eq. 74), ρ_sp = ks |F(θi)|² e^{−g} S(θi)² · δ(wr − mirror(wi)) / cosθi, is a
+// Dirac delta: it has no value at any pair of directions a measurement or a MERL cell holds, so
+// `eval` (and with it fitting, metrics, tabulation) omits it, as the Holzschuch-Pacanowski and
+// BBM implementations of He's model do (seed 002 does not print its formulas; they are in its
+// supplemental). Its reflectance is `specular_reflectance` so albedo budgets can add it.
+//
+// Reciprocal: every factor is symmetric in (wi, wo), and computed from symmetric sums.
+// Sampling: kd cosine-weighted, or a Beckmann half-vector lobe (`lobe_alpha`) reflected about
+// wo, mixed by kd and an estimate of the directional-diffuse albedo.
+#include <cmath>
+#include <optional>
+#include <string_view>
+
+#include "brdfkit/core/vec.h"
+#include "brdfkit/fresnel/conductor.h"
+#include "brdfkit/models/he_effective_roughness.h"
+#include "brdfkit/models/he_series.h"
+#include "brdfkit/models/he_shadowing.h"
+#include "brdfkit/models/param.h"
+
+namespace brdfkit {
+
+struct HeTorrance {
+  // Indices into the parameter table.
+  enum : int { kKd = 0, kKs = 1, kSigma0 = 2, kTau = 3, kEta = 4, kK = 5 };
+  // Relative truncation of the Eq. 78 series (he_series.h bounds the omitted part by it).
+  static constexpr double kSeriesTolerance = 1e-6;
+
+  static std::string_view name() { return "he"; }
+  static std::string_view description() {
+    return "He-Torrance-Sillion-Greenberg 1991: uniform diffuse + directional diffuse (Kirchhoff series), "
+           "complex index, per-channel wavelength";
+  }
+  static constexpr bool kReciprocal = true;
+  static ParamTable params() {
+    return {{"kd", 0.0, 1.0, 0.2, Scope::PerChannel, true, "uniform-diffuse albedo a(lambda) as kd/pi (He 1991 Eq. 69)"},
+            {"ks", 0.0, 2.0, 1.0, Scope::PerChannel, true,
+             "scale of the directional-diffuse term; 1 = He's physical model (seed 002 fits it freely)"},
+            {"sigma0", 0.005, 2.0, 0.18, Scope::Shared, false, "RMS surface height sigma0 in um (He 1991 §2)"},
+            {"tau", 0.1, 50.0, 3.0, Scope::Shared, false, "surface autocorrelation length tau in um (He 1991 §2)"},
+            {"eta", 0.01, 100.0, 1.5, Scope::PerChannel, false, "real part of the complex index n (He 1991 Eq. 70)"},
+            {"k", 0.0, 100.0, 0.0, Scope::PerChannel, false, "imaginary part of the complex index (0: dielectric)"}};
+  }
+
+  static double wavelength_um(int c) { return kChannelWavelengthUm[c < 0 || c > 2 ? 1 : c]; }
+
+  // The directional-diffuse term alone, without ks (He 1991 Eq. 75).
+  template <class T>
+  static T directional_diffuse(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, HeSeriesStats* stats = nullptr,
+                               double series_tolerance = kSeriesTolerance) {
+    using std::sqrt;
+    if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
+    const T& sigma0 = p[kSigma0];
+    const T& tau = p[kTau];
+    const double lambda = wavelength_um(c);
+    const double k = 2 * kPi / lambda;
+    const Vec3<T> v = wi + wo;  // k̂r − k̂i with k̂i = −wi: symmetric in (wi, wo)
+    const T vxy2 = v.x() * v.x() + v.y() * v.y();
+    const T vv = vxy2 + v.z() * v.z();
+    const T& vz = v.z();
+    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));  // bisector angle
+    const T geometry = (vv / vz) * (vv / vz);                                // Eq. 76 (unpolarized)
+    const T shadow = he_shadowing(wi.z(), sigma0, tau) * he_shadowing(wo.z(), sigma0, tau);  // Eq. 23
+    const T sigma = he_effective_roughness(wi.z(), wo.z(), sigma0, tau);                     // Eq. 80
+    const T kg = T(k) * sigma * vz;
+    const T g = kg * kg;                                              // Eq. 79
+    const T c_exp = T(0.25 * k * k) * tau * tau * vxy2;               // τ² v_xy²/4, v_xy = k |v_xy|
+    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * he_series(g, c_exp, series_tolerance, stats);  // Eq. 78
+    return fresnel * geometry * shadow * dist / (T(kPi) * wi.z() * wo.z());  // Eq. 75
+  }
+
+  template <class T> static T eval(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo) {
+    if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
+    return p[kKd] * T(kInvPi) + p[kKs] * directional_diffuse(p, c, wi, wo);
+  }
+
+  // Weight ks |F(θi)|² e^{−g} S(θi)² of the specular spike at incidence cosθi (He 1991 Eq. 74,
+  // with θr = θi): the directional reflectance the delta adds to ∫ ρ cosθr dωr.
+  static double specular_reflectance(const double* p, int c, double cos_i);
+
+  // Width of the Beckmann half-vector lobe the sampler draws from: the rough limit 2σ0/τ of the
+  // series combined with the width λ/(2πτ) of its first term (the smooth limit at normal incidence).
+  static double lobe_alpha(const double* p, int c);
+
+  static std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe);
+  static double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi);
+};
+
+}  // namespace brdfkit

@@ -1,0 +1,66 @@
+// He et al. 1991's shadowing (Eq. 24–25) and effective roughness (Eq. 80–83).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "brdfkit/models/he_effective_roughness.h"
+#include "brdfkit/models/he_shadowing.h"
+#include "brdfkit/ndf/beckmann.h"
+
+namespace brdfkit {
+namespace {
+
+// With the errata's e^{−a²}, Eq. 25's Λ is Smith's Λ of a Beckmann surface with α = 2σ0/τ, so
+// S(θ) = (1 − ½ erfc(a)) · G1_Beckmann(θ). The Λ printed in the paper (no e^{−a²}) is not: the
+// test measures how far it is off (reported as a paper error).
+TEST(HeShadowing, ErrataLambdaIsSmithBeckmann) {
+  double worst_printed = 0, worst_angle = 0;
+  for (double sigma0 : {0.05, 0.18, 1.0}) {
+    for (double tau : {0.5, 3.0, 20.0}) {
+      const double alpha = 2 * sigma0 / tau;
+      const Beckmann<double> beckmann(&alpha);
+      for (double deg = 1; deg < 89.5; deg += 2) {
+        const double t = deg * kPi / 180;
+        const double a = tau / (2 * sigma0 * std::tan(t));
+        const double g1 = 1 / (1 + beckmann.Lambda(std::tan(t)));
+        const double s = he_shadowing(std::cos(t), sigma0, tau);
+        EXPECT_NEAR(s, (1 - 0.5 * std::erfc(a)) * g1, 1e-12) << sigma0 << " " << tau << " " << deg;
+        const double printed_lambda = 0.5 * (1 / (std::sqrt(kPi) * a) - std::erfc(a));
+        const double printed = (1 - 0.5 * std::erfc(a)) / (printed_lambda + 1);
+        if (std::fabs(printed / s - 1) > worst_printed) worst_printed = std::fabs(printed / s - 1), worst_angle = deg;
+      }
+    }
+  }
+  std::printf("[ he shadow ] Eq. 25 as printed (no exp(-a^2)) is off by up to %.1f%% (at %.0f deg)\n",
+              100 * worst_printed, worst_angle);
+  EXPECT_GT(worst_printed, 0.1);
+  // Limits: 1 at normal incidence, 0 at grazing.
+  EXPECT_EQ(he_shadowing(1.0, 0.18, 3.0), 1.0);
+  EXPECT_EQ(he_shadowing(0.0, 0.18, 3.0), 0.0);
+}
+
+// z0 solves Eq. 81, σ ≤ σ0, σ = σ0 at normal incidence, symmetric in θi and θr.
+TEST(HeEffectiveRoughness, SolvesEq81) {
+  for (double sigma0 : {0.01, 0.18, 2.0}) {
+    for (double tau : {0.1, 3.0, 50.0}) {
+      EXPECT_EQ(he_effective_roughness(1.0, 1.0, sigma0, tau), sigma0);
+      for (double di : {0.0, 30.0, 70.0, 89.0}) {
+        for (double dr : {10.0, 60.0, 85.0}) {
+          const double ci = std::cos(di * kPi / 180), cr = std::cos(dr * kPi / 180);
+          const double s = he_effective_roughness(ci, cr, sigma0, tau);
+          ASSERT_TRUE(s > 0 && s <= sigma0) << s;
+          EXPECT_EQ(s, he_effective_roughness(cr, ci, sigma0, tau));
+          const double z0 = sigma0 * std::sqrt(sigma0 * sigma0 / (s * s) - 1);  // Eq. 80 inverted
+          auto kf = [&](double t) { return std::tan(t) * std::erfc(tau / (2 * sigma0 * std::tan(t))); };
+          const double rhs = sigma0 / 4 * (kf(di * kPi / 180) + kf(dr * kPi / 180)) *
+                             std::exp(-z0 * z0 / (2 * sigma0 * sigma0));
+          EXPECT_NEAR(std::sqrt(kPi / 2) * z0, rhs, 1e-9 * sigma0 * (1 + rhs / sigma0)) << di << " " << dr;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace brdfkit

@@ -1,0 +1,78 @@
+// The directional-diffuse series of He et al. 1991 (Eq. 78): the truncation rule of
+// models/he_series.h against a long-double reference summed far past any significant term,
+// and its rough limit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "brdfkit/models/he_series.h"
+
+namespace brdfkit {
+namespace {
+
+// Σ_{m=1}^{M} e^{−g} gᵐ/(m!·m) e^{−c/m} in long double, M = g + 40√g + √c + 400: past the
+// Poisson mode by 40 standard deviations and past the peak of e^{−c/m}/m, so what it leaves out
+// is below 10⁻³⁰ of the sum for every (g, c) here.
+long double reference_series(double g, double c) {
+  const long double lg = std::log((long double)g);
+  const int m_max = int(g + 40 * std::sqrt(g) + std::sqrt(c) + 400);
+  long double sum = 0;
+  for (int m = 1; m <= m_max; ++m)
+    sum += std::exp(-(long double)g + m * lg - std::lgamma((long double)m + 1) - std::log((long double)m) -
+                    (long double)c / m);
+  return sum;
+}
+
+// The omitted part is bounded by the reported bound, which is ≤ 1e-6 (the model's tolerance),
+// over roughness regimes from nearly smooth (g = 10⁻³) to very rough (g = 3000) and lobe
+// offsets c = τ² v_xy²/4 from the specular peak (0) to far in the tail (10⁴).
+TEST(HeSeries, TruncationErrorWithinItsBound) {
+  double worst_error = 0, worst_bound = 0;
+  int most_terms = 0;
+  for (double g : {1e-3, 0.1, 1.0, 4.5, 30.0, 200.0, 3000.0}) {
+    for (double c : {0.0, 0.5, 10.0, 300.0, 1e4}) {
+      HeSeriesStats stats;
+      const double s = he_series(g, c, 1e-6, &stats);
+      const long double ref = reference_series(g, c);
+      if (ref < 1e-300L) continue;  // underflows in double: nothing to compare
+      const double rel = double(std::fabs((long double)s - ref) / ref);
+      EXPECT_LE(rel, stats.omitted_bound + 1e-13) << "g " << g << " c " << c;
+      EXPECT_LE(stats.omitted_bound, 1e-6) << "g " << g << " c " << c;
+      EXPECT_LE(s, double(ref) * (1 + 1e-13)) << "truncation only removes positive terms";
+      worst_error = std::max(worst_error, rel);
+      worst_bound = std::max(worst_bound, stats.omitted_bound);
+      most_terms = std::max(most_terms, stats.terms);
+    }
+  }
+  std::printf("[ he series ] worst relative truncation error %.3g, worst bound %.3g, at most %d terms\n", worst_error,
+              worst_bound, most_terms);
+  EXPECT_LE(most_terms, 1000);  // O(√g) terms around the mode, not O(g)
+}
+
+// A tighter tolerance shrinks the error with it (the rule is not a fixed term count).
+TEST(HeSeries, ToleranceControlsTheError) {
+  for (double tol : {1e-3, 1e-6, 1e-10}) {
+    HeSeriesStats stats;
+    const double s = he_series(200.0, 150.0, tol, &stats);
+    const long double ref = reference_series(200.0, 150.0);
+    EXPECT_LE(double(std::fabs((long double)s - ref) / ref), tol) << tol;
+  }
+}
+
+// Rough limit (He 1991 §4, after Beckmann & Spizzichino 1963 §5.3): for g ≫ 1 the Poisson
+// weights concentrate at m ≈ g and Σ → e^{−c/g}/g, the Gaussian slope distribution; the
+// relative correction is O(1/g).
+TEST(HeSeries, RoughLimitIsGaussian) {
+  for (double g : {500.0, 2000.0}) {
+    for (double u : {0.0, 0.5, 1.0, 2.0}) {
+      const double c = u * g;
+      const double s = he_series(g, c);
+      const double limit = std::exp(-u) / g;
+      EXPECT_NEAR(s / limit, 1.0, 6.0 / g) << "g " << g << " c/g " << u;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace brdfkit
