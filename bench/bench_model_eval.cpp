@@ -1,10 +1,17 @@
-// Evaluation throughput of kd/π + Cook-Torrance for every distribution of the catalogue, through
-// eval_batch over the 1 458 000 direction pairs of a MERL grid (cell centres, DESIGN.md §2),
-// three channels per sweep, one core. DESIGN.md §12's floor: 3.7 ms per sweep for GGX in double.
-// Also the per-pair virtual Model::eval for GGX, to show what the batch loop buys.
+// Evaluation throughput of kd/π + Cook-Torrance for every distribution of the catalogue (issue #3:
+// evaluations per second on one core), through the runtime Model::eval_batch that fitting uses
+// (ModelAdapter → the static type's structure-of-arrays loop, one virtual call per sweep) over the
+// 1 458 000 direction pairs of a MERL grid (cell centres, DESIGN.md §2), three channels per sweep.
+// DESIGN.md §12's floor: 3.7 ms per sweep for GGX in double. Also the per-pair virtual
+// Model::eval for GGX, to show what the batch loop buys. `--stride=k` evaluates every k-th pair
+// only (for distributions whose Smith term is numeric, where a full sweep takes minutes); the
+// rate (items_per_second = evaluations/s) is what to compare.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <tuple>
 #include <vector>
 
@@ -21,15 +28,20 @@ struct Grid {
   size_t size() const { return wix.size(); }
 };
 
-// Every MERL cell at its centre in index space (θh quadratic), the directions of a full file.
+size_t g_stride = 1;
+
+// Every MERL cell at its centre in index space (θh quadratic), the directions of a full file
+// (every g_stride-th of them).
 const Grid& merl_grid() {
   static const Grid g = [] {
     Grid g;
-    const size_t n = 90 * 90 * 180;
+    const size_t n = 90 * 90 * 180 / g_stride + 1;
     for (auto* v : {&g.wix, &g.wiy, &g.wiz, &g.wox, &g.woy, &g.woz}) v->reserve(n);
+    size_t cell = 0;
     for (int ih = 0; ih < 90; ++ih)
       for (int id = 0; id < 90; ++id)
         for (int ip = 0; ip < 180; ++ip) {
+          if (cell++ % g_stride != 0) continue;
           const double th = (ih + 0.5) / 90, td = (id + 0.5) / 90 * kPi / 2, pd = (ip + 0.5) / 180 * kPi;
           Vec3d wi, wo;
           from_half_diff({th * th * kPi / 2, 0.0, td, pd}, wi, wo);
@@ -47,20 +59,18 @@ const Grid& merl_grid() {
 
 template <class M> void sweep(benchmark::State& state) {
   const Grid& g = merl_grid();
-  const ParamValues v = ParamValues::defaults(M::params());
+  const Model& m = model_by_name(M::name());
+  const ParamValues v = ParamValues::defaults(m.params());
+  const SoaPairs d{g.wix.data(), g.wiy.data(), g.wiz.data(), g.wox.data(), g.woy.data(), g.woz.data()};
   std::vector<double> out(g.size());
   for (auto _ : state) {
     for (int c = 0; c < 3; ++c) {
-      M::eval_batch(v.channel(c), c, g.size(), g.wix.data(), g.wiy.data(), g.wiz.data(), g.wox.data(), g.woy.data(),
-                    g.woz.data(), out.data());
+      m.eval_batch(v.channel(c), c, g.size(), d, out.data());
       benchmark::DoNotOptimize(out.data());
       benchmark::ClobberMemory();
     }
   }
-  const double evals = 3.0 * double(g.size());
-  state.SetItemsProcessed(int64_t(state.iterations() * evals));
-  state.counters["ns_per_eval"] =
-      benchmark::Counter(evals * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.SetItemsProcessed(int64_t(state.iterations() * 3 * g.size()));
 }
 
 void virtual_per_pair(benchmark::State& state) {
@@ -76,21 +86,25 @@ void virtual_per_pair(benchmark::State& state) {
       benchmark::ClobberMemory();
     }
   }
-  const double evals = 3.0 * double(g.size());
-  state.SetItemsProcessed(int64_t(state.iterations() * evals));
-  state.counters["ns_per_eval"] =
-      benchmark::Counter(evals * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.SetItemsProcessed(int64_t(state.iterations() * 3 * g.size()));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int a = 1; a < argc; ++a)
+    if (std::strncmp(argv[a], "--stride=", 9) == 0) {
+      g_stride = std::max(1, std::atoi(argv[a] + 9));
+      for (int b = a; b + 1 < argc; ++b) argv[b] = argv[b + 1];
+      --argc;
+      break;
+    }
   std::printf(
-      "kd/pi + Cook-Torrance (Schlick F, Smith G unless noted), eval_batch over the %zu pairs of a MERL grid x 3 "
-      "channels per iteration (Time = one sweep), one core.\n"
+      "kd/pi + Cook-Torrance (Schlick F, Smith G unless noted), Model::eval_batch over %zu pairs of a MERL grid "
+      "(every %zu-th) x 3 channels per iteration (Time = one sweep), one core; items_per_second = evaluations/s.\n"
       "Reproduce: cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release && ninja -C build bench_model_eval && "
-      "build/bench/bench_model_eval --benchmark_min_time=1\n",
-      merl_grid().size());
+      "taskset -c 0 build/bench/bench_model_eval --benchmark_min_time=1 [--stride=8]\n",
+      merl_grid().size(), g_stride);
   std::apply(
       [](auto... m) {
         (benchmark::RegisterBenchmark(std::string(decltype(m)::name()).c_str(), sweep<decltype(m)>)

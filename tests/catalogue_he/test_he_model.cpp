@@ -73,11 +73,13 @@ TEST(He, SpikePlusDirectionalDiffuseEqualsFresnel) {
     const double t = deg * kPi / 180;
     const double fresnel = ConductorFresnel<double>(p.data() + 4).eval(std::cos(t));
     const double spike = HeTorrance::specular_reflectance(p.data(), 1, std::cos(t));
-    const double dd = albedo(model(), p.data(), 1, t, 1e-6);
+    const double dd = albedo(model(), p.data(), 1, t, 1e-4);
     std::printf("[ he energy ] theta_i %2.0f: spike %.4f + directional diffuse %.4f = %.4f, F = %.4f\n", deg, spike,
                 dd, spike + dd, fresnel);
     EXPECT_NEAR(spike + dd, fresnel, 0.01 * fresnel) << deg;
-    if (deg == 0.0) EXPECT_NEAR(spike / fresnel, std::exp(-std::pow(4 * kPi * 0.05 / 0.526, 2)), 1e-12);
+    if (deg == 0.0) {
+      EXPECT_NEAR(spike / fresnel, std::exp(-std::pow(4 * kPi * 0.05 / 0.526, 2)), 1e-12);
+    }
   }
 }
 
@@ -133,7 +135,7 @@ TEST(He, JetsMatchCentralDifferences) {
       for (int i = 0; i < 6; ++i) pj[i] = Jet(p[i], i);
       const Jet fj = HeTorrance::eval<Jet>(pj.data(), c, wi.cast<Jet>(), wo.cast<Jet>());
       const double fd = HeTorrance::eval<double>(p.data(), c, wi, wo);
-      ASSERT_NEAR(fj.a, fd, 1e-13 * fd);
+      ASSERT_NEAR(fj.a, fd, 1e-12 * fd);  // Jet arithmetic rounds differently
       for (int i = 0; i < 6; ++i) {
         const double h = 1e-3 * std::abs(p[i]);
         P lo = p, hi = p;

@@ -3,9 +3,15 @@
 // in θi, θo ∈ [0°, 90°] and Δφ ∈ [0°, 180°]; dωi dωo = sinθi sinθo dθi dθo dφi dΔφ, where
 // ∫ dφi = 2π (isotropy) and the Δφ ∈ [180°, 360°) half mirrors [0°, 180°) (factor 2). Channels
 // averaged; reported over the max albedo like `ngan` (DESIGN.md §7).
+// On a MERL table the integral runs over the table's cells (metric_cells.h): μ = cosθi cosθo at
+// the cell centre times the cell's pair measure.
 #include "brdfkit/fit/metric_definition.h"
 
 namespace brdfkit::fit {
+
+namespace {
+double bagher_density(const Vec3d& wi, const Vec3d& wo) { return wi.z() * wo.z(); }
+}  // namespace
 
 MetricDefinition bagher_metric(int coarsen) {
   const double deg = kPi / 180.0;
@@ -19,6 +25,7 @@ MetricDefinition bagher_metric(int coarsen) {
   d.grid.cos_i_factor = false;
   d.channel_pool = 1.0 / 3.0;
   d.divide_by_max_albedo = true;
+  d.cells = {&bagher_density, false, true};
   return d;
 }
 

@@ -7,7 +7,7 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/metric_definition.h"
-#include "brdfkit/fit/model_batch.h"
+#include "brdfkit/measured/merl_brdf.h"
 
 namespace brdfkit::fit {
 
@@ -40,18 +40,23 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
   m.sqrt_ = def.sqrt;
   m.data_ = &data;
   double scale2 = def.channel_pool;
-  if (def.cache) {
+  double wsum = 0;  // Σ w over the domain, in chunk order: deterministic
+  const auto* merl = dynamic_cast<const MerlBrdf*>(&data);
+  if (merl && def.cells.density && opt.domain == MetricDomain::Auto) {
+    CellDomain cells = build_cell_domain(merl->table(), def.cells, opt.coarsen);
+    m.chunks_ = std::move(cells.chunks);
+    m.on_cells_ = true;
+    m.folded_ = def.cells.fold;
+    wsum = cells.measure_sum;
+  } else if (def.cache) {
     m.chunks_.resize(m.grid_.theta_i.size());
     tbb::parallel_for(size_t(0), m.chunks_.size(), [&](size_t i) { m.chunks_[i] = build_chunk(m.grid_, i, data); });
-    if (m.sample_count() == 0)
-      throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
-  }
-  if (def.divide_by_weight_sum) {
-    double wsum = 0;  // in chunk order: deterministic
     for (const MetricChunk& ch : m.chunks_)
       for (double s : ch.sqrt_weight) wsum += s * s;
-    scale2 /= wsum;
   }
+  if (def.cache && m.sample_count() == 0)
+    throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
+  if (def.divide_by_weight_sum) scale2 /= wsum;
   if (def.divide_by_max_albedo) {
     m.albedo_norm_ = max_measured_albedo(data, opt.coarsen);
     if (!(m.albedo_norm_ > 0) || !std::isfinite(m.albedo_norm_))
@@ -68,6 +73,13 @@ const MetricChunk& Metric::chunk(size_t i, MetricChunk& scratch) const {
   return scratch;
 }
 
+void Metric::check_model(const Model& model) const {
+  if (folded_ && !model.reciprocal())
+    throw InputError("model '" + std::string(model.name()) + "'",
+                     "is not reciprocal; metric '" + id_ +
+                         "' on a MERL table's cells assumes reciprocity (use the grid domain)");
+}
+
 size_t Metric::sample_count() const {
   size_t n = 0;
   for (const MetricChunk& ch : chunks_) n += ch.size();
@@ -77,10 +89,10 @@ size_t Metric::sample_count() const {
 double Metric::finish(double sum_sq) const { return sqrt_ ? std::sqrt(sum_sq) : sum_sq; }
 
 double Metric::value(const Model& model, const ParamValues& values) const {
+  check_model(model);
   std::vector<double> partial(chunk_count(), 0.0);
   std::vector<unsigned char> bad(chunk_count(), 0);
   std::vector<size_t> count(chunk_count(), 0);
-  const BatchEvalFn fast = batch_eval_for(model);
   tbb::parallel_for(size_t(0), chunk_count(), [&](size_t i) {
     MetricChunk scratch;
     const MetricChunk& ch = chunk(i, scratch);
@@ -89,7 +101,7 @@ double Metric::value(const Model& model, const ParamValues& values) const {
     std::vector<double> rho(ch.size());
     const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
     for (int c = 0; c < 3; ++c) {
-      eval_pairs(model, fast, values.channel(c), c, ch.size(), d, rho.data());
+      model.eval_batch(values.channel(c), c, ch.size(), d, rho.data());
       const auto& meas = ch.measured[size_t(c)];
       for (size_t k = 0; k < ch.size(); ++k) {
         const double f = ch.factor[k];

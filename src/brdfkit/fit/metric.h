@@ -28,11 +28,17 @@ class MetricUndefined : public InputError {
   using InputError::InputError;
 };
 
+// Where a metric samples a MERL table: its own cells (metric_cells.h: values exact at the cell
+// centres, the metric's weights carried over), or the paper's (θi, θo, Δφ) grid looked up in the
+// nearest cell. Other data always use the grid.
+enum class MetricDomain { Auto, Grid };
+
 struct MetricOptions {
-  // Widens every grid step by this integer factor (1 = the paper's grid). Only for tests and
-  // quick looks where the paper's grid is not the point (DESIGN.md §7 warns against fitting on
-  // coarser grids).
+  // Widens every grid step by this integer factor (1 = the paper's grid; on MERL cells: one cell
+  // per k × k × k block of indices). Only for tests and quick looks where the paper's grid is
+  // not the point (DESIGN.md §7 warns against fitting on coarser grids).
   int coarsen = 1;
+  MetricDomain domain = MetricDomain::Auto;  // Auto: a MERL table's cells where the metric has them
 };
 
 class Metric {
@@ -43,12 +49,18 @@ class Metric {
   double scale() const { return scale_; }
   // The normalizing albedo (max measured albedo over θi ≤ 80°) or 1 where the metric has none.
   double albedo_norm() const { return albedo_norm_; }
-  size_t chunk_count() const { return grid_.theta_i.size(); }
+  size_t chunk_count() const { return cached() ? chunks_.size() : grid_.theta_i.size(); }
   // Chunk i: the cached one, or built into `scratch` for metrics too large to keep (hp-rmse).
   const MetricChunk& chunk(size_t i, MetricChunk& scratch) const;
   bool cached() const { return !chunks_.empty(); }
   // Valid samples over all chunks (cached metrics only; 0 otherwise).
   size_t sample_count() const;
+  // Whether the domain is a MERL table's cells ("cells") or the paper's grid ("grid").
+  bool on_cells() const { return on_cells_; }
+  // The cells domain folds both orientations of a cell into one sample (metric_cells.h), which
+  // is exact only for reciprocal models: value() and fit_model() refuse the others (InputError).
+  bool needs_reciprocal_model() const { return folded_; }
+  void check_model(const Model& model) const;
 
   // The metric's value for a model with parameter values (parallel, deterministic order).
   double value(const Model& model, const ParamValues& values) const;
@@ -65,6 +77,8 @@ class Metric {
   double scale_ = 1.0;
   double albedo_norm_ = 1.0;
   std::vector<MetricChunk> chunks_;
+  bool on_cells_ = false;
+  bool folded_ = false;
   const MeasuredBrdf* data_ = nullptr;  // for chunks built on demand; must outlive the metric
 };
 

@@ -3,6 +3,7 @@
 // Each paper's metric lives in its own file (ngan_metric.cpp, bagher_metric.cpp, low_metric.cpp,
 // hp_metric.cpp).
 #include "brdfkit/fit/metric.h"
+#include "brdfkit/fit/metric_cells.h"
 #include "brdfkit/fit/metric_grid.h"
 
 namespace brdfkit::fit {
@@ -15,6 +16,9 @@ struct MetricDefinition {
   bool divide_by_weight_sum = false;  // Σ w over valid samples in the denominator (seed 002 Eq. 1)
   bool divide_by_max_albedo = false;  // reported relative to the max measured albedo (seed 002 §4.1)
   bool cache = true;             // keep the looked-up domain (false: rebuilt per evaluation)
+  // The same integral on a MERL table's own cells (metric_cells.h); density nullptr: the metric
+  // keeps its grid there too.
+  CellWeighting cells;
 };
 
 MetricDefinition ngan_metric(int coarsen);

@@ -3,9 +3,20 @@
 // with centres θ = 0.5°…79.5°, Δφ = 0.5°…179.5° (isotropy: the other half of Δφ mirrors this
 // one and would only double both sums), w = sinθi sinθo, the three channels pooled in one sum
 // (so the denominator counts each sample once per channel).
+//
+// On a MERL table the bins are the table's own cells (metric_cells.h): Eq. 1 sums over "the
+// non-empty bins of R" with w "the solid angle correction term", which for a cell is its pair
+// measure ∫ dωi dωo; a cell is in the domain when θi, θo ≤ 80° at its centre.
 #include "brdfkit/fit/metric_definition.h"
 
 namespace brdfkit::fit {
+
+namespace {
+double ngan_density(const Vec3d& wi, const Vec3d& wo) {
+  const double c80 = std::cos(80 * kPi / 180) - 1e-12;  // θ ≤ 80° inclusive
+  return wi.z() >= c80 && wo.z() >= c80 ? 1.0 : 0.0;
+}
+}  // namespace
 
 MetricDefinition ngan_metric(int coarsen) {
   const double deg = kPi / 180.0;
@@ -22,6 +33,7 @@ MetricDefinition ngan_metric(int coarsen) {
   d.channel_pool = 1.0 / 3.0;
   d.divide_by_weight_sum = true;
   d.divide_by_max_albedo = true;
+  d.cells = {&ngan_density, true, true};
   return d;
 }
 

@@ -23,6 +23,9 @@ struct ProcedureOptions {
   std::string metric;              // empty: the procedure's own metric
   bool per_channel_shape = false;  // fit the shape per channel instead of one shape for R, G, B
   std::function<void(std::string_view)> progress;  // optional one-line progress messages
+  // hp-2step: a (θh, θd) cell is diffraction-dominated where |det(∇ log ρ, ∇f)| < this (seed 004
+  // §4.2's 10⁻²; not scale-free, so an option: DESIGN.md §8).
+  double diffraction_threshold = 1e-2;
 };
 
 // Known procedure ids, stable order: ngan, bagher, low-e1, low-e2, hp-2step, hp-1step.

@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 #include <tbb/parallel_for.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,11 +12,12 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/box_least_squares.h"
-#include "brdfkit/fit/model_batch.h"
 
 namespace brdfkit::fit {
 
 namespace {
+
+using Eigen::Index;
 
 struct Var {
   int param;
@@ -30,8 +32,26 @@ struct Basis {
   double affine_value = 0;
 };
 
-// The fitting problem on a metric's cached domain: parameter layout, the colour projection and
-// the residual vector r(k, c) of metric.h, stored channel-major (c·N + sample).
+// The objective at one point of the solver's parameters x: cost = Σ r² (the metric's squared
+// residual sum, its scale included), and with derivatives the Gauss-Newton pieces Jᵀr and JᵀJ.
+struct Objective {
+  double cost = 0;
+  Eigen::VectorXd gradient;
+  Eigen::MatrixXd jtj;
+};
+
+// A chunk of the metric's domain at the current stride (every s-th sample): direction pairs,
+// weights and measured values, gathered once per stride.
+struct Block {
+  size_t n = 0;
+  SoaPairs d{};
+  const double* m[3] = {};
+  std::vector<double> w2;      // (scale · √w · f)² · stride: the identity residual's weight
+  std::vector<double> rw, f;   // scale · √w · √stride and f: the transformed residual's parts
+  std::vector<double> own;     // gathered arrays (stride > 1)
+};
+
+// The fitting problem on a metric's cached domain.
 //
 // Variable projection (seed 002 §3) solves the per-channel linear parameters (kd, ks) for fixed
 // shape. A per-channel parameter P on which ρ depends affinely and only through one linear
@@ -39,29 +59,35 @@ struct Basis {
 // sub-problem too (DESIGN.md §12: kd, ks·F0, ks·(1 − F0) are the linear colours): L b(P) =
 // u b(P_hi) + v b(P_lo) with u = L t, v = L (1 − t), t = (P − P_lo)/(P_hi − P_lo), u, v ≥ 0; so
 // L = u + v and P = P_lo + (P_hi − P_lo) u/(u + v). Both properties are checked numerically.
+//
+// With the shape x fixed, ρ_c = Σ_j β_cj b_j(x) and the colours β_c minimize Σ w² (B β − m_c)²:
+// everything the solver needs is an inner product <a, b> = Σ_k w_k² a_k b_k of the bases b_j,
+// their derivatives d_vj = ∂b_j/∂x_v and the measured m_c. One parallel pass per evaluation
+// accumulates those Gram matrices; β = the box-constrained solution of <B,B> β = <B,m>; the
+// residual r = Bβ − m has (Golub & Pereyra 1973) the Jacobian J_v = d_v β + B ∂β_v, with ∂β_v
+// on the free colours F solving <B,B>_FF ∂β_F = <d_v,m> − (<d_v,B> + <B,d_v>) β (active colours
+// stay at their bound), so JᵀJ is a few small products of those Gram blocks. Cost and Jᵀr are
+// summed directly from the residuals (no cancellation at a near-zero residual).
 class Problem {
  public:
-  Problem(const Model& model, const Metric& metric)
-      : model_(model), metric_(metric), table_(model.params()), fast_(batch_eval_for(model)) {
-    offset_.push_back(0);
-    for (size_t i = 0; i < metric.chunk_count(); ++i) offset_.push_back(offset_.back() + chunk(i).size());
-    n_ = offset_.back();
+  Problem(const Model& model, const Metric& metric) : model_(model), metric_(metric), table_(model.params()) {
     std::vector<int> lin;
     for (size_t p = 0; p < table_.size(); ++p)
       if (table_[p].linear && table_[p].scope == Scope::PerChannel) lin.push_back(int(p));
     project_ = metric.transform() == Transform::Identity && !lin.empty();
     std::vector<int> paired(table_.size(), -1);  // P → L
     if (project_) pair_affine(lin, paired);
-    for (int l : lin) {
-      int affine = -1;
-      for (size_t p = 0; p < table_.size(); ++p)
-        if (paired[p] == l) affine = int(p);
-      if (affine < 0) bases_.push_back({l});
-      else {
-        bases_.push_back({l, affine, table_[size_t(affine)].lower});
-        bases_.push_back({l, affine, table_[size_t(affine)].upper});
+    if (project_)
+      for (int l : lin) {
+        int affine = -1;
+        for (size_t p = 0; p < table_.size(); ++p)
+          if (paired[p] == l) affine = int(p);
+        if (affine < 0) bases_.push_back({l});
+        else {
+          bases_.push_back({l, affine, table_[size_t(affine)].lower});
+          bases_.push_back({l, affine, table_[size_t(affine)].upper});
+        }
       }
-    }
     if (bases_.size() > 6) throw InputError("model '" + std::string(model.name()) + "'", "more than 6 linear parameters");
     for (size_t p = 0; p < table_.size(); ++p) {
       const ParamSpec& s = table_[p];
@@ -72,15 +98,21 @@ class Problem {
         for (int c = 0; c < 3; ++c) vars_.push_back({int(p), c});
     }
     classes_ = channel_independent() ? 1 : 3;
-    if (project_) basis_.assign(size_t(classes_) * bases_.size(), std::vector<double>(n_));
-    for (size_t j = 0; j < bases_.size(); ++j) constant_.push_back(shape_independent(j));
+    for (size_t j = 0; j < bases_.size(); ++j) {
+      constant_.push_back(shape_independent(j));
+      if (!constant_.back()) varying_.push_back(j);
+    }
+    set_stride(1);
   }
 
   const std::vector<Var>& vars() const { return vars_; }
-  size_t residual_count() const { return 3 * n_; }
   const ParamTable& table() const { return table_; }
-  bool has_linear() const { return !bases_.empty() || project_; }
-  bool projects() const { return project_; }
+  bool has_linear() const { return project_; }
+  size_t sample_count() const {
+    size_t n = 0;
+    for (size_t i = 0; i < metric_.chunk_count(); ++i) n += chunk(i).size();
+    return n;
+  }
 
   void to_values(const double* x, ParamValues& pv) const {
     for (size_t v = 0; v < vars_.size(); ++v)
@@ -92,82 +124,451 @@ class Problem {
       x[v] = pv.values[size_t(std::max(0, vars_[v].channel))][size_t(vars_[v].param)];
   }
 
-  // Solves the colours for the shape in pv (identity-transform residual), writing them into pv.
-  bool project(ParamValues& pv) {
-    const size_t K = bases_.size();
-    const size_t stride = 3 * (K * K + K);
-    std::vector<double> partial(metric_.chunk_count() * stride, 0.0);
-    tbb::parallel_for(size_t(0), metric_.chunk_count(), [&](size_t i) {
+  // Uses every s-th sample of each chunk, weighted s times (s = 1: the whole domain).
+  void set_stride(size_t s) {
+    if (s == stride_ && !blocks_.empty()) return;
+    stride_ = s;
+    cache_valid_ = false;
+    const double scale = metric_.scale();
+    blocks_.assign(metric_.chunk_count(), Block{});
+    tbb::parallel_for(size_t(0), blocks_.size(), [&](size_t i) {
       const MetricChunk& ch = chunk(i);
-      const size_t off = offset_[i];
-      const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
-      for (int q = 0; q < classes_; ++q) {
-        for (size_t j = 0; j < K; ++j) {
-          if (constant_[j] && bases_ready_) continue;  // e.g. the Lambertian 1/π: computed once
-          std::vector<double> p = pv.values[size_t(q)];
-          for (const Basis& b : bases_) p[size_t(b.lin)] = 0.0;
-          p[size_t(bases_[j].lin)] = 1.0;
-          if (bases_[j].affine >= 0) p[size_t(bases_[j].affine)] = bases_[j].affine_value;
-          eval_pairs(model_, fast_, p.data(), q, ch.size(), d, basis_[size_t(q) * K + j].data() + off);
+      Block& b = blocks_[i];
+      b.n = (ch.size() + s - 1) / s;
+      const double* src[9] = {ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(),
+                              ch.wo_z.data(), ch.measured[0].data(), ch.measured[1].data(), ch.measured[2].data()};
+      const double* dst[9];
+      if (s == 1) {
+        std::copy(src, src + 9, dst);
+      } else {
+        b.own.resize(9 * b.n);
+        for (int a = 0; a < 9; ++a) {
+          double* out = b.own.data() + size_t(a) * b.n;
+          for (size_t k = 0; k < b.n; ++k) out[k] = src[a][k * s];
+          dst[a] = out;
         }
       }
-      // Normal equations of Σ (s f)² (Σ_j β_j b_j − m)² per channel, seed 002 §3.
-      std::vector<double> w2(ch.size());
-      for (size_t k = 0; k < ch.size(); ++k) {
-        const double w = ch.sqrt_weight[k] * ch.factor[k];
-        w2[k] = w * w;
-      }
-      double* acc = partial.data() + i * stride;
-      for (int c = 0; c < 3; ++c) {
-        const int q = classes_ == 1 ? 0 : c;
-        double* A = acc + size_t(c) * (K * K + K);
-        double* y = A + K * K;
-        const auto& m = ch.measured[size_t(c)];
-        for (size_t j = 0; j < K; ++j) {
-          const double* bj = basis_[size_t(q) * K + j].data() + off;
-          if (c == 0 || classes_ > 1)
-            for (size_t l = j; l < K; ++l) {
-              const double* bl = basis_[size_t(q) * K + l].data() + off;
-              double s = 0;
-              for (size_t k = 0; k < ch.size(); ++k) s += w2[k] * bj[k] * bl[k];
-              A[j * K + l] = s;
-            }
-          else
-            for (size_t l = j; l < K; ++l) A[j * K + l] = acc[j * K + l];
-          double s = 0;
-          for (size_t k = 0; k < ch.size(); ++k) s += w2[k] * bj[k] * m[k];
-          y[j] = s;
-        }
+      b.d = {dst[0], dst[1], dst[2], dst[3], dst[4], dst[5]};
+      for (int c = 0; c < 3; ++c) b.m[c] = dst[6 + c];
+      b.w2.resize(b.n);
+      b.rw.resize(b.n);
+      b.f.resize(b.n);
+      for (size_t k = 0; k < b.n; ++k) {
+        const double sw = ch.sqrt_weight[k * s], f = ch.factor[k * s];
+        b.rw[k] = scale * sw * std::sqrt(double(s));
+        b.f[k] = f;
+        const double w = b.rw[k] * f;
+        b.w2[k] = w * w;
       }
     });
-    bases_ready_ = true;
-    Eigen::VectorXd lo(K), hi(K);
+    if (project_) fill_constant_bases();
+  }
+
+  // The objective at x; with `solved`, the colours of the projection are written into it (and
+  // x's values). False when the model is not finite on the domain.
+  bool evaluate(const double* x, bool derivatives, Objective& out, ParamValues* solved = nullptr) {
+    ParamValues pv = base_;
+    to_values(x, pv);
+    const bool ok = project_ ? evaluate_projected(x, pv, derivatives, out) : evaluate_plain(pv, derivatives, out);
+    if (!ok || !std::isfinite(out.cost)) return false;
+    if (derivatives && (!out.gradient.allFinite() || !out.jtj.allFinite())) return false;
+    if (solved) *solved = pv;
+    return true;
+  }
+
+  void set_base(const ParamValues& pv) {
+    base_ = pv;
+    cache_valid_ = false;
+  }
+
+ private:
+  const MetricChunk& chunk(size_t i) const {
+    static thread_local MetricChunk unused;
+    return metric_.chunk(i, unused);
+  }
+
+  // Channel c's parameter vector for basis j: the shape of pv, linear parameters 0 except the
+  // basis's own (1) and its paired parameter at the basis's bound.
+  std::vector<double> basis_params(const ParamValues& pv, int c, size_t j) const {
+    std::vector<double> p = pv.values[size_t(c)];
+    for (const Basis& b : bases_) p[size_t(b.lin)] = 0.0;
+    p[size_t(bases_[j].lin)] = 1.0;
+    if (bases_[j].affine >= 0) p[size_t(bases_[j].affine)] = bases_[j].affine_value;
+    return p;
+  }
+
+  void fill_constant_bases() {
+    const size_t K = bases_.size();
+    const ParamValues pv = ParamValues::defaults(table_);
+    const_bases_.assign(blocks_.size(), {});
+    tbb::parallel_for(size_t(0), blocks_.size(), [&](size_t i) {
+      const Block& b = blocks_[i];
+      auto& store = const_bases_[i];
+      store.assign(size_t(classes_) * K, {});
+      for (int q = 0; q < classes_; ++q)
+        for (size_t j = 0; j < K; ++j) {
+          if (!constant_[j]) continue;
+          auto& v = store[size_t(q) * K + j];
+          v.resize(b.n);
+          const std::vector<double> p = basis_params(pv, q, j);
+          model_.eval_batch(p.data(), q, b.n, b.d, v.data());
+        }
+    });
+  }
+
+  // Basis j of class q in block i at the cached shape.
+  const double* basis(size_t i, int q, size_t j) const {
+    const size_t K = bases_.size();
+    return constant_[j] ? const_bases_[i][size_t(q) * K + j].data() : cache_[i][size_t(q) * K + j].data();
+  }
+
+  // Which classes (basis sets) var v changes: all for a shared var, its channel's otherwise
+  // (per-channel shape vars imply one class per channel, see channel_independent()).
+  bool affects(const Var& v, int q) const { return v.channel < 0 || v.channel == q; }
+
+  double step(size_t v, double x) const {
+    const ParamSpec& s = table_[size_t(vars_[v].param)];
+    double h = 1e-6 * std::max(std::abs(x), 1e-3);
+    if (x + h > s.upper) h = -h;  // stay inside the bounds
+    return h;
+  }
+
+  bool evaluate_projected(const double* x, ParamValues& pv, bool derivatives, Objective& out) {
+    const size_t K = bases_.size(), nv = vars_.size(), nb = blocks_.size();
+    const size_t Q = size_t(classes_);
+    // 1. Bases at x and their Gram matrices (cached: Ceres asks for derivatives at the point it
+    //    just evaluated).
+    if (!cache_valid_ || !std::equal(cache_x_.begin(), cache_x_.end(), x)) {
+      cache_.assign(nb, {});
+      const size_t stride = Q * (K * K + 3 * K);
+      std::vector<double> partial(nb * stride, 0.0);
+      tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+        const Block& b = blocks_[i];
+        cache_[i].assign(Q * K, {});
+        for (size_t q = 0; q < Q; ++q)
+          for (size_t j : varying_) {
+            auto& v = cache_[i][q * K + j];
+            v.resize(b.n);
+            const std::vector<double> p = basis_params(pv, int(q), j);
+            model_.eval_batch(p.data(), int(q), b.n, b.d, v.data());
+          }
+        double* acc = partial.data() + i * stride;
+        for (size_t q = 0; q < Q; ++q) {
+          double* G = acc + q * (K * K + 3 * K);
+          double* y = G + K * K;  // y[c·K + j] = <b_j, m_c>
+          for (size_t j = 0; j < K; ++j) {
+            const double* bj = basis(i, int(q), j);
+            for (size_t l = j; l < K; ++l) {
+              const double* bl = basis(i, int(q), l);
+              double s = 0;
+              for (size_t k = 0; k < b.n; ++k) s += b.w2[k] * bj[k] * bl[k];
+              G[j * K + l] = s;
+            }
+            for (size_t c = 0; c < 3; ++c) {
+              if (Q > 1 && c != q) continue;
+              double s = 0;
+              for (size_t k = 0; k < b.n; ++k) s += b.w2[k] * bj[k] * b.m[c][k];
+              y[c * K + j] = s;
+            }
+          }
+        }
+      });
+      gram_.assign(Q, Eigen::MatrixXd::Zero(Index(K), Index(K)));
+      for (auto& y : ym_) y = Eigen::VectorXd::Zero(Index(K));
+      for (size_t i = 0; i < nb; ++i)  // block order: deterministic sums
+        for (size_t q = 0; q < Q; ++q) {
+          const double* G = partial.data() + i * stride + q * (K * K + 3 * K);
+          for (size_t j = 0; j < K; ++j)
+            for (size_t l = j; l < K; ++l) gram_[q](Index(j), Index(l)) += G[j * K + l];
+          for (size_t c = 0; c < 3; ++c)
+            if (Q == 1 || c == q)
+              for (size_t j = 0; j < K; ++j) ym_[c][Index(j)] += G[K * K + c * K + j];
+        }
+      for (auto& G : gram_) G = G.selfadjointView<Eigen::Upper>();
+      cache_x_.assign(x, x + nv);
+      cache_valid_ = true;
+    }
+    // 2. The colours.
+    Eigen::VectorXd lo = Eigen::VectorXd::Zero(Index(K)), hi = Eigen::VectorXd::Zero(Index(K));
     for (size_t j = 0; j < K; ++j) {
       const ParamSpec& s = table_[size_t(bases_[j].lin)];
       // A paired basis carries u or v ≥ 0; L = u + v is bounded below by 0 (pair_affine checks).
-      lo[Eigen::Index(j)] = bases_[j].affine >= 0 ? 0.0 : s.lower;
-      hi[Eigen::Index(j)] = bases_[j].affine >= 0 ? std::numeric_limits<double>::infinity() : s.upper;
+      lo[Index(j)] = bases_[j].affine >= 0 ? 0.0 : s.lower;
+      hi[Index(j)] = bases_[j].affine >= 0 ? std::numeric_limits<double>::infinity() : s.upper;
     }
+    std::array<Eigen::VectorXd, 3> beta;
     for (int c = 0; c < 3; ++c) {
-      Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(K), Eigen::Index(K));
-      Eigen::VectorXd y = Eigen::VectorXd::Zero(Eigen::Index(K));
-      for (size_t i = 0; i < metric_.chunk_count(); ++i) {  // chunk order: deterministic sums
-        const double* a = partial.data() + i * stride + size_t(c) * (K * K + K);
+      const Eigen::MatrixXd& G = gram_[Q == 1 ? 0 : size_t(c)];
+      if (!G.allFinite() || !ym_[size_t(c)].allFinite()) return false;
+      beta[size_t(c)] = box_least_squares(G, ym_[size_t(c)], lo, hi);
+    }
+    write_colours(beta, pv);
+    // 3. Cost (and, with derivatives, the derivative bases, their Gram blocks and Jᵀr) in one pass.
+    // Extended vectors of class q: the K bases, then d_vj for each var v affecting q and j varying.
+    std::vector<std::vector<std::pair<size_t, size_t>>> ext(Q);  // (v, j) of each derivative vector
+    if (derivatives)
+      for (size_t q = 0; q < Q; ++q)
+        for (size_t v = 0; v < nv; ++v)
+          if (affects(vars_[v], int(q)))
+            for (size_t j : varying_) ext[q].push_back({v, j});
+    std::vector<size_t> L(Q), offset(Q + 1, 0);
+    for (size_t q = 0; q < Q; ++q) {
+      L[q] = K + ext[q].size();
+      offset[q + 1] = offset[q] + L[q] * L[q] + 3 * L[q];
+    }
+    const size_t stride = 1 + nv + offset[Q];
+    std::vector<ParamValues> shifted;
+    std::vector<double> h(nv);
+    if (derivatives)
+      for (size_t v = 0; v < nv; ++v) {
+        std::vector<double> xh(x, x + nv);
+        h[v] = step(v, x[v]);
+        xh[v] += h[v];
+        ParamValues ph = base_;
+        to_values(xh.data(), ph);
+        shifted.push_back(ph);
+      }
+    std::vector<double> partial(nb * stride, 0.0);
+    tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+      const Block& b = blocks_[i];
+      double* acc = partial.data() + i * stride;
+      std::vector<std::vector<double>> dv(Q * nv * K);  // d_vj of class q at [(q·nv + v)·K + j]
+      if (derivatives)
+        for (size_t q = 0; q < Q; ++q)
+          for (const auto& [v, j] : ext[q]) {
+            auto& d = dv[(q * nv + v) * K + j];
+            d.resize(b.n);
+            const std::vector<double> p = basis_params(shifted[v], int(q), j);
+            model_.eval_batch(p.data(), int(q), b.n, b.d, d.data());
+            const double* b0 = basis(i, int(q), j);
+            const double inv = 1.0 / h[v];
+            for (size_t k = 0; k < b.n; ++k) d[k] = (d[k] - b0[k]) * inv;
+          }
+      std::vector<double> r(b.n), g(b.n);
+      for (int c = 0; c < 3; ++c) {
+        const size_t q = Q == 1 ? 0 : size_t(c);
+        const Eigen::VectorXd& bc = beta[size_t(c)];
+        for (size_t k = 0; k < b.n; ++k) r[k] = -b.m[c][k];
         for (size_t j = 0; j < K; ++j) {
-          for (size_t l = j; l < K; ++l) A(Eigen::Index(j), Eigen::Index(l)) += a[j * K + l];
-          y[Eigen::Index(j)] += a[K * K + j];
+          const double* bj = basis(i, int(q), j);
+          const double coef = bc[Index(j)];
+          for (size_t k = 0; k < b.n; ++k) r[k] += coef * bj[k];
+        }
+        double cost = 0;
+        for (size_t k = 0; k < b.n; ++k) cost += b.w2[k] * r[k] * r[k];
+        acc[0] += cost;
+        if (!derivatives) continue;
+        for (size_t v = 0; v < nv; ++v) {  // Σ w² r (d_v β): Jᵀr without the ∂β term (added below)
+          if (!affects(vars_[v], int(q))) continue;
+          std::fill(g.begin(), g.end(), 0.0);
+          for (size_t j : varying_) {
+            const double* d = dv[(q * nv + v) * K + j].data();
+            const double coef = bc[Index(j)];
+            for (size_t k = 0; k < b.n; ++k) g[k] += coef * d[k];
+          }
+          double s = 0;
+          for (size_t k = 0; k < b.n; ++k) s += b.w2[k] * r[k] * g[k];
+          acc[1 + v] += s;
         }
       }
-      A = A.selfadjointView<Eigen::Upper>();
-      if (!A.allFinite() || !y.allFinite()) return false;
-      const Eigen::VectorXd beta = box_least_squares(A, y, lo, hi);
+      if (!derivatives) return;
+      for (size_t q = 0; q < Q; ++q) {
+        std::vector<const double*> e(L[q]);
+        for (size_t j = 0; j < K; ++j) e[j] = basis(i, int(q), j);
+        for (size_t a = 0; a < ext[q].size(); ++a)
+          e[K + a] = dv[(q * nv + ext[q][a].first) * K + ext[q][a].second].data();
+        double* G = acc + 1 + nv + offset[q];
+        double* y = G + L[q] * L[q];
+        for (size_t a = 0; a < L[q]; ++a) {
+          for (size_t bb = a; bb < L[q]; ++bb) {
+            if (a < K && bb < K) continue;  // the bases' own block is cached already
+            double s = 0;
+            for (size_t k = 0; k < b.n; ++k) s += b.w2[k] * e[a][k] * e[bb][k];
+            G[a * L[q] + bb] = s;
+          }
+          if (a < K) continue;
+          for (size_t c = 0; c < 3; ++c) {
+            if (Q > 1 && c != q) continue;
+            double s = 0;
+            for (size_t k = 0; k < b.n; ++k) s += b.w2[k] * e[a][k] * b.m[c][k];
+            y[c * L[q] + a] = s;
+          }
+        }
+      }
+    });
+    out.cost = 0;
+    out.gradient = Eigen::VectorXd::Zero(Index(nv));
+    out.jtj = Eigen::MatrixXd::Zero(Index(nv), Index(nv));
+    std::vector<Eigen::MatrixXd> E(Q);
+    std::vector<std::array<Eigen::VectorXd, 3>> Ey(Q);
+    for (size_t q = 0; q < Q; ++q) {
+      E[q] = Eigen::MatrixXd::Zero(Index(L[q]), Index(L[q]));
+      for (auto& y : Ey[q]) y = Eigen::VectorXd::Zero(Index(L[q]));
+    }
+    for (size_t i = 0; i < nb; ++i) {  // block order: deterministic sums
+      const double* acc = partial.data() + i * stride;
+      out.cost += acc[0];
+      if (!derivatives) continue;
+      for (size_t v = 0; v < nv; ++v) out.gradient[Index(v)] += acc[1 + v];
+      for (size_t q = 0; q < Q; ++q) {
+        const double* G = acc + 1 + nv + offset[q];
+        for (size_t a = 0; a < L[q]; ++a) {
+          for (size_t bb = a; bb < L[q]; ++bb) E[q](Index(a), Index(bb)) += G[a * L[q] + bb];
+          for (size_t c = 0; c < 3; ++c) Ey[q][c][Index(a)] += G[L[q] * L[q] + c * L[q] + a];
+        }
+      }
+    }
+    if (!derivatives) return true;
+    for (size_t q = 0; q < Q; ++q) {
+      E[q].topLeftCorner(Index(K), Index(K)) = gram_[q];
+      E[q] = E[q].selfadjointView<Eigen::Upper>();
+    }
+    // 4. Jacobian of the projected residual (Golub-Pereyra), per channel, from the Gram blocks.
+    for (int c = 0; c < 3; ++c) {
+      const size_t q = Q == 1 ? 0 : size_t(c);
+      const Eigen::VectorXd& bc = beta[size_t(c)];
+      const Eigen::MatrixXd& G = gram_[q];
+      std::vector<Index> free;
+      for (size_t j = 0; j < K; ++j)
+        if (bc[Index(j)] > lo[Index(j)] && bc[Index(j)] < hi[Index(j)]) free.push_back(Index(j));
+      Eigen::MatrixXd Gff(Index(free.size()), Index(free.size()));
+      for (size_t a = 0; a < free.size(); ++a)
+        for (size_t bb = 0; bb < free.size(); ++bb) Gff(Index(a), Index(bb)) = G(free[a], free[bb]);
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver;
+      if (!free.empty()) solver.compute(Gff);
+      // Index in E[q] of d_vj, or −1 when b_j does not vary.
+      auto at = [&](size_t v, size_t j) -> Index {
+        for (size_t a = 0; a < ext[q].size(); ++a)
+          if (ext[q][a].first == v && ext[q][a].second == j) return Index(K + a);
+        return -1;
+      };
+      std::vector<size_t> vs;
+      for (size_t v = 0; v < nv; ++v)
+        if (affects(vars_[v], int(q))) vs.push_back(v);
+      // g_v = d_v β as coefficients over E's columns; ∂β_v over the bases.
+      std::vector<Eigen::VectorXd> gv, dbeta;
+      for (size_t v : vs) {
+        Eigen::VectorXd coef = Eigen::VectorXd::Zero(Index(L[q]));
+        for (size_t j : varying_) coef[at(v, j)] = bc[Index(j)];
+        // ∂y − ∂G β with ∂G = <d_v, B> + <B, d_v>.
+        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Index(K));
+        for (size_t j = 0; j < K; ++j) {
+          const Index dj = constant_[j] ? -1 : at(v, j);
+          double s = dj >= 0 ? Ey[q][size_t(c)][dj] : 0.0;
+          for (size_t l = 0; l < K; ++l) {
+            const Index dl = constant_[l] ? -1 : at(v, l);
+            double dG = 0;
+            if (dj >= 0) dG += E[q](dj, Index(l));
+            if (dl >= 0) dG += E[q](Index(j), dl);
+            s -= dG * bc[Index(l)];
+          }
+          rhs[Index(j)] = s;
+        }
+        Eigen::VectorXd db = Eigen::VectorXd::Zero(Index(K));
+        if (!free.empty()) {
+          Eigen::VectorXd rf(Index(free.size()));
+          for (size_t a = 0; a < free.size(); ++a) rf[Index(a)] = rhs[free[a]];
+          const Eigen::VectorXd sf = solver.solve(rf);
+          for (size_t a = 0; a < free.size(); ++a) db[free[a]] = sf[Index(a)];
+        }
+        gv.push_back(coef);
+        dbeta.push_back(db);
+      }
+      const Eigen::MatrixXd EB = E[q].leftCols(Index(K));  // <e_a, b_l>
+      const Eigen::VectorXd resid_grad = G * bc - ym_[size_t(c)];  // <B, r>: 0 on the free colours
+      for (size_t a = 0; a < vs.size(); ++a) {
+        out.gradient[Index(vs[a])] += dbeta[a].dot(resid_grad);
+        for (size_t bb = 0; bb < vs.size(); ++bb) {
+          const double t = gv[a].dot(E[q] * gv[bb]) + gv[a].dot(EB * dbeta[bb]) + gv[bb].dot(EB * dbeta[a]) +
+                           dbeta[a].dot(G * dbeta[bb]);
+          out.jtj(Index(vs[a]), Index(vs[bb])) += t;
+        }
+      }
+    }
+    return true;
+  }
+
+  // Every parameter a solver variable (a residual not linear in ρ, or no colour): the residual
+  // r = rw (T(f ρ) − T(f m)) and its forward-difference Jacobian, reduced per block to JᵀJ, Jᵀr.
+  bool evaluate_plain(const ParamValues& pv, bool derivatives, Objective& out) {
+    const size_t nv = vars_.size(), nb = blocks_.size();
+    const Transform t = metric_.transform();
+    const size_t stride = 1 + nv + nv * nv;
+    std::vector<ParamValues> shifted;
+    std::vector<double> h(nv);
+    std::vector<double> x(nv);
+    from_values(pv, x.data());
+    if (derivatives)
+      for (size_t v = 0; v < nv; ++v) {
+        std::vector<double> xh = x;
+        h[v] = step(v, x[v]);
+        xh[v] += h[v];
+        ParamValues ph = pv;
+        to_values(xh.data(), ph);
+        shifted.push_back(ph);
+      }
+    std::vector<double> partial(nb * stride, 0.0);
+    tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+      const Block& b = blocks_[i];
+      double* acc = partial.data() + i * stride;
+      std::vector<double> rho(b.n), r(3 * b.n), J(derivatives ? nv * 3 * b.n : 0, 0.0);
+      auto residual = [&](const ParamValues& p, int c, double* dst) {
+        model_.eval_batch(p.channel(c), c, b.n, b.d, rho.data());
+        for (size_t k = 0; k < b.n; ++k)
+          dst[k] = b.rw[k] * (apply_transform(t, b.f[k] * rho[k]) - apply_transform(t, b.f[k] * b.m[c][k]));
+      };
+      for (int c = 0; c < 3; ++c) residual(pv, c, r.data() + size_t(c) * b.n);
+      for (double v : r) acc[0] += v * v;
+      if (!derivatives) return;
+      for (size_t v = 0; v < nv; ++v)
+        for (int c = 0; c < 3; ++c) {
+          if (!affects(vars_[v], c)) continue;
+          double* Jv = J.data() + (v * 3 + size_t(c)) * b.n;
+          residual(shifted[v], c, Jv);
+          const double* r0 = r.data() + size_t(c) * b.n;
+          const double inv = 1.0 / h[v];
+          for (size_t k = 0; k < b.n; ++k) Jv[k] = (Jv[k] - r0[k]) * inv;
+        }
+      for (size_t u = 0; u < nv; ++u) {
+        const double* Ju = J.data() + u * 3 * b.n;
+        double s = 0;
+        for (size_t k = 0; k < 3 * b.n; ++k) s += Ju[k] * r[k];
+        acc[1 + u] = s;
+        for (size_t v = u; v < nv; ++v) {
+          const double* Jv = J.data() + v * 3 * b.n;
+          double s2 = 0;
+          for (size_t k = 0; k < 3 * b.n; ++k) s2 += Ju[k] * Jv[k];
+          acc[1 + nv + u * nv + v] = s2;
+        }
+      }
+    });
+    out.cost = 0;
+    out.gradient = Eigen::VectorXd::Zero(Index(nv));
+    out.jtj = Eigen::MatrixXd::Zero(Index(nv), Index(nv));
+    for (size_t i = 0; i < nb; ++i) {  // block order: deterministic sums
+      const double* acc = partial.data() + i * stride;
+      out.cost += acc[0];
+      if (!derivatives) continue;
+      for (size_t u = 0; u < nv; ++u) {
+        out.gradient[Index(u)] += acc[1 + u];
+        for (size_t v = u; v < nv; ++v) out.jtj(Index(u), Index(v)) += acc[1 + nv + u * nv + v];
+      }
+    }
+    if (derivatives) out.jtj = out.jtj.selfadjointView<Eigen::Upper>();
+    return true;
+  }
+
+  // β (per channel, per basis) → parameter values: linear ones directly, a pair (v, u) as
+  // L = u + v, P = P_lo + (P_hi − P_lo) u/(u + v).
+  void write_colours(const std::array<Eigen::VectorXd, 3>& beta, ParamValues& pv) const {
+    for (int c = 0; c < 3; ++c) {
       auto& v = pv.values[size_t(c)];
-      for (size_t j = 0; j < K; ++j) {
+      for (size_t j = 0; j < bases_.size(); ++j) {
         const Basis& b = bases_[j];
         if (b.affine < 0) {
-          v[size_t(b.lin)] = beta[Eigen::Index(j)];
+          v[size_t(b.lin)] = beta[size_t(c)][Index(j)];
         } else if (b.affine_value == table_[size_t(b.affine)].lower) {  // the pair (v, u) starts here
-          const double lo_coef = beta[Eigen::Index(j)], hi_coef = beta[Eigen::Index(j + 1)];
+          const double lo_coef = beta[size_t(c)][Index(j)], hi_coef = beta[size_t(c)][Index(j + 1)];
           const ParamSpec& L = table_[size_t(b.lin)];
           const ParamSpec& P = table_[size_t(b.affine)];
           const double sum = lo_coef + hi_coef;
@@ -177,74 +578,6 @@ class Problem {
         }
       }
     }
-    return true;
-  }
-
-  // Residuals at pv; with projection the colours are solved first (and written into pv).
-  bool residuals(ParamValues& pv, double* r) {
-    if (project_) {
-      if (!project(pv)) return false;
-    }
-    const double scale = metric_.scale();
-    std::vector<unsigned char> ok(metric_.chunk_count(), 1);
-    tbb::parallel_for(size_t(0), metric_.chunk_count(), [&](size_t i) {
-      const MetricChunk& ch = chunk(i);
-      const size_t off = offset_[i];
-      const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
-      bool finite = true;
-      for (int c = 0; c < 3; ++c) {
-        double* out = r + size_t(c) * n_ + off;
-        const auto& m = ch.measured[size_t(c)];
-        if (project_) {
-          // ρ from the stored bases: the model need not be evaluated again.
-          const int q = classes_ == 1 ? 0 : c;
-          const size_t K = bases_.size();
-          for (size_t k = 0; k < ch.size(); ++k) out[k] = -m[k];
-          for (size_t j = 0; j < K; ++j) {
-            const double coef = coefficient(pv, c, j);
-            const double* b = basis_[size_t(q) * K + j].data() + off;
-            for (size_t k = 0; k < ch.size(); ++k) out[k] += coef * b[k];
-          }
-          for (size_t k = 0; k < ch.size(); ++k) out[k] *= scale * ch.sqrt_weight[k] * ch.factor[k];
-        } else {
-          const Transform t = metric_.transform();
-          eval_pairs(model_, fast_, pv.channel(c), c, ch.size(), d, out);
-          for (size_t k = 0; k < ch.size(); ++k) {
-            const double f = ch.factor[k];
-            out[k] = scale * ch.sqrt_weight[k] * (apply_transform(t, f * out[k]) - apply_transform(t, f * m[k]));
-          }
-        }
-        for (size_t k = 0; k < ch.size(); ++k) finite = finite && std::isfinite(out[k]);
-      }
-      ok[i] = finite;
-    });
-    for (unsigned char o : ok)
-      if (!o) return false;
-    return true;
-  }
-
-  // Colours from the identity-transform projection, whatever the metric: starting values for
-  // a metric that cannot project (seed 003 fits its E2 with every parameter free).
-  bool initial_colours(ParamValues& pv) {
-    if (project_) return project(pv);
-    return true;
-  }
-
- private:
-  const MetricChunk& chunk(size_t i) const {
-    static thread_local MetricChunk unused;
-    return metric_.chunk(i, unused);
-  }
-
-  // Coefficient of basis j in channel c from the parameter values (the inverse of project()'s map).
-  double coefficient(const ParamValues& pv, int c, size_t j) const {
-    const Basis& b = bases_[j];
-    const auto& v = pv.values[size_t(c)];
-    const double L = v[size_t(b.lin)];
-    if (b.affine < 0) return L;
-    const ParamSpec& P = table_[size_t(b.affine)];
-    const double t = (v[size_t(b.affine)] - P.lower) / (P.upper - P.lower);
-    return b.affine_value == P.lower ? L * (1 - t) : L * t;
   }
 
   // Fixed probe direction pairs, away from the mirror direction and from the horizon.
@@ -286,14 +619,11 @@ class Problem {
   }
 
   // Whether basis j is the same for every value of the solver's parameters (probed at the
-  // defaults and at another point of the bounds): then it is evaluated once per fit.
+  // defaults and at another point of the bounds): then it is evaluated once per stride.
   bool shape_independent(size_t j) const {
     const ParamValues pv = ParamValues::defaults(table_);
     for (int c = 0; c < classes_; ++c) {
-      std::vector<double> a = pv.values[size_t(c)];
-      for (const Basis& b : bases_) a[size_t(b.lin)] = 0.0;
-      a[size_t(bases_[j].lin)] = 1.0;
-      if (bases_[j].affine >= 0) a[size_t(bases_[j].affine)] = bases_[j].affine_value;
+      const std::vector<double> a = basis_params(pv, c, j);
       std::vector<double> b = a;
       for (const Var& v : vars_) {
         const ParamSpec& s = table_[size_t(v.param)];
@@ -327,66 +657,64 @@ class Problem {
   const Model& model_;
   const Metric& metric_;
   ParamTable table_;
-  BatchEvalFn fast_;
-  std::vector<size_t> offset_;
-  size_t n_ = 0;
+  ParamValues base_;
   bool project_ = false;
   std::vector<Basis> bases_;
   std::vector<Var> vars_;
   int classes_ = 3;
-  std::vector<std::vector<double>> basis_;
   std::vector<bool> constant_;
-  bool bases_ready_ = false;
+  std::vector<size_t> varying_;  // the bases that are not constant
+  size_t stride_ = 0;
+  std::vector<Block> blocks_;
+  std::vector<std::vector<std::vector<double>>> const_bases_, cache_;  // [block][q·K + j][sample]
+  bool cache_valid_ = false;
+  std::vector<double> cache_x_;
+  std::vector<Eigen::MatrixXd> gram_;             // <B, B> per class, at cache_x_
+  std::array<Eigen::VectorXd, 3> ym_;             // <B, m_c> per channel, at cache_x_
 };
 
-// The projected (or plain) residual as one Ceres cost with forward-difference derivatives
-// (DESIGN.md §12: one block, parallel inside).
-class ProjectedCost final : public ceres::CostFunction {
+// The objective as a Ceres problem of n + 1 residuals instead of the domain's millions: with
+// JᵀJ = Q Λ Qᵀ, the residuals r̃ = Λ^{-½} Qᵀ Jᵀr and e = √(cost − |r̃|²) with Jacobian [Λ^{½} Qᵀ; 0]
+// have the same cost, gradient and Gauss-Newton matrix as the full residual, so every
+// Levenberg-Marquardt step and acceptance test is the one the full problem would take.
+class CompressedCost final : public ceres::CostFunction {
  public:
-  ProjectedCost(Problem& problem, const ParamValues& base) : problem_(problem), base_(base) {
-    set_num_residuals(int(problem.residual_count()));
-    mutable_parameter_block_sizes()->push_back(int(problem.vars().size()));
+  explicit CompressedCost(Problem& problem) : problem_(problem), n_(problem.vars().size()) {
+    set_num_residuals(int(n_ + 1));
+    mutable_parameter_block_sizes()->push_back(int(n_));
   }
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const auto& vars = problem_.vars();
-    const size_t n = vars.size(), m = problem_.residual_count();
-    // Ceres evaluates a trial point without derivatives, then again with them once accepted:
-    // the second residual evaluation is served from here.
-    if (!last_r_.empty() && std::equal(last_x_.begin(), last_x_.end(), parameters[0])) {
-      std::copy(last_r_.begin(), last_r_.end(), residuals);
-    } else {
-      ParamValues pv = base_;
-      problem_.to_values(parameters[0], pv);
-      last_r_.clear();
-      if (!problem_.residuals(pv, residuals)) return false;
-      last_x_.assign(parameters[0], parameters[0] + n);
-      last_r_.assign(residuals, residuals + m);
+    const bool derivatives = jacobians && jacobians[0];
+    Objective o;
+    if (!problem_.evaluate(parameters[0], derivatives, o)) return false;
+    std::fill(residuals, residuals + n_ + 1, 0.0);
+    if (!derivatives) {
+      residuals[n_] = std::sqrt(o.cost);
+      return true;
     }
-    if (!jacobians || !jacobians[0]) return true;
-    std::vector<double> x(parameters[0], parameters[0] + n), rh(m);
-    for (size_t v = 0; v < n; ++v) {
-      const ParamSpec& s = problem_.table()[size_t(vars[v].param)];
-      double h = 1e-6 * std::max(std::abs(x[v]), 1e-3);
-      if (x[v] + h > s.upper) h = -h;  // stay inside the bounds
-      std::vector<double> xh = x;
-      xh[v] += h;
-      ParamValues ph = base_;
-      problem_.to_values(xh.data(), ph);
-      if (!problem_.residuals(ph, rh.data())) return false;
-      double* J = jacobians[0];
-      const double inv = 1.0 / h;
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, m, 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t k = r.begin(); k < r.end(); ++k) J[k * n + v] = (rh[k] - residuals[k]) * inv;
-      });
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(o.jtj);
+    const Eigen::VectorXd& lambda = eig.eigenvalues();
+    const Eigen::MatrixXd& Q = eig.eigenvectors();
+    const double floor = 1e-14 * std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
+    double* J = jacobians[0];  // row-major (n + 1) × n
+    std::fill(J, J + (n_ + 1) * n_, 0.0);
+    double projected = 0;
+    for (size_t i = 0; i < n_; ++i) {
+      const double l = lambda[Index(i)];
+      if (!(l > floor)) continue;
+      const double s = std::sqrt(l);
+      residuals[i] = Q.col(Index(i)).dot(o.gradient) / s;
+      projected += residuals[i] * residuals[i];
+      for (size_t v = 0; v < n_; ++v) J[i * n_ + v] = s * Q(Index(v), Index(i));
     }
+    residuals[n_] = std::sqrt(std::max(0.0, o.cost - projected));
     return true;
   }
 
  private:
   Problem& problem_;
-  ParamValues base_;
-  mutable std::vector<double> last_x_, last_r_;
+  size_t n_;
 };
 
 double draw(const ParamSpec& s, std::mt19937_64& rng) {
@@ -397,6 +725,16 @@ double draw(const ParamSpec& s, std::mt19937_64& rng) {
   return s.lower + t * (s.upper - s.lower);
 }
 
+// Sample strides of the coarse-to-fine levels, the whole domain (1) last.
+std::vector<size_t> levels(size_t samples, bool coarse_to_fine) {
+  std::vector<size_t> out;
+  if (coarse_to_fine)
+    for (size_t s : {64, 16, 4})
+      if (samples / s >= 30000) out.push_back(s);
+  out.push_back(1);
+  return out;
+}
+
 }  // namespace
 
 FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& options) {
@@ -405,18 +743,19 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
   if (!metric.cached())
     throw InputError("metric '" + std::string(metric.id()) + "'",
                      "is for reports only (its grid is too large to keep); fit under ngan, bagher, low-e1 or low-e2");
+  metric.check_model(model);
   const auto t0 = std::chrono::steady_clock::now();
   Problem problem(model, metric);
   const ParamTable& table = problem.table();
   const size_t n = problem.vars().size();
   if (n == 0 && !problem.has_linear())
     throw InputError("model '" + std::string(model.name()) + "'", "has no free parameter to fit");
+  const std::vector<size_t> strides = levels(problem.sample_count(), options.coarse_to_fine);
 
   std::mt19937_64 rng(options.seed);
   FitResult best;
   double best_cost = std::numeric_limits<double>::infinity();
   int total_iterations = 0;
-  std::vector<double> residual(problem.residual_count());
   for (int start = 0; start < options.starts; ++start) {
     ParamValues pv = ParamValues::defaults(table);
     if (start > 0)
@@ -425,47 +764,50 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
         for (int c = 0; c < 3; ++c)
           if (v.channel < 0 || v.channel == c) pv.values[size_t(c)][size_t(v.param)] = x;
       }
-    if (!problem.initial_colours(pv)) continue;
+    problem.set_base(pv);
     std::vector<double> x(n);
     problem.from_values(pv, x.data());
-    double cost;
-    bool converged = true;
+    bool converged = true, usable = true;
     std::string message = "colours only: solved directly";
-    if (n > 0) {
+    for (size_t level = 0; level < strides.size() && n > 0 && usable; ++level) {
+      const bool last = level + 1 == strides.size();
+      problem.set_stride(strides[level]);
       ceres::Problem::Options popt;
       popt.cost_function_ownership = ceres::TAKE_OWNERSHIP;
       ceres::Problem cp(popt);
-      cp.AddResidualBlock(new ProjectedCost(problem, pv), nullptr, x.data());
+      cp.AddResidualBlock(new CompressedCost(problem), nullptr, x.data());
       for (size_t v = 0; v < n; ++v) {
         const ParamSpec& s = table[size_t(problem.vars()[v].param)];
         cp.SetParameterLowerBound(x.data(), int(v), s.lower);
         cp.SetParameterUpperBound(x.data(), int(v), s.upper);
       }
       ceres::Solver::Options so;
-      so.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
+      so.linear_solver_type = ceres::DENSE_QR;
       so.max_num_iterations = options.max_iterations;
-      so.function_tolerance = 1e-12;
-      so.gradient_tolerance = 1e-14;
-      so.parameter_tolerance = 1e-10;
+      // Coarse levels only bring the start close; the last one converges tightly.
+      so.function_tolerance = last ? 1e-12 : 1e-8;
+      so.gradient_tolerance = last ? 1e-14 : 1e-10;
+      so.parameter_tolerance = last ? 1e-10 : 1e-6;
       so.logging_type = ceres::SILENT;
       so.num_threads = 1;  // the cost function is parallel inside
       ceres::Solver::Summary summary;
       ceres::Solve(so, &cp, &summary);
       total_iterations += int(summary.iterations.size()) - 1;
-      if (!summary.IsSolutionUsable()) continue;
-      converged = summary.termination_type == ceres::CONVERGENCE;
-      message = summary.message;
-      problem.to_values(x.data(), pv);
+      usable = summary.IsSolutionUsable();
+      if (last) {
+        converged = summary.termination_type == ceres::CONVERGENCE;
+        message = summary.message;
+      }
     }
-    if (!problem.residuals(pv, residual.data())) continue;
-    double sum = 0;
-    for (double r : residual) sum += r * r;
-    cost = sum;
-    bool finite = std::isfinite(cost);
+    if (!usable) continue;
+    problem.set_stride(1);
+    Objective o;
+    if (!problem.evaluate(x.data(), false, o, &pv)) continue;
+    bool finite = std::isfinite(o.cost);
     for (const auto& ch : pv.values)
       for (double v : ch) finite = finite && std::isfinite(v);
-    if (finite && cost < best_cost) {
-      best_cost = cost;
+    if (finite && o.cost < best_cost) {
+      best_cost = o.cost;
       best.values = pv;
       best.best_start = start;
       best.converged = converged;

@@ -1,9 +1,11 @@
 #pragma once
 // Fitting a model under a metric (DESIGN.md §8 `ngan` procedure, seed 002 §3): the lobe-shape
-// parameters by bounded nonlinear least squares (Ceres, bounds from the ParamTable, numeric
-// derivatives), the colours — the per-channel parameters flagged `linear` — solved inside every
-// evaluation by bound-constrained linear least squares (variable projection), one lobe shape
-// shared by R, G, B. Under a metric whose residual is not linear in ρ (low-e2's logarithm) the
+// parameters by bounded nonlinear least squares (Ceres, bounds from the ParamTable, derivatives of
+// the model by forward differences), the colours — the per-channel parameters flagged `linear` —
+// solved inside every evaluation by bound-constrained linear least squares (variable
+// projection), one lobe shape shared by R, G, B. No residual vector or Jacobian of the domain's
+// size is ever stored: each evaluation reduces the domain, in parallel chunks summed in a fixed
+// order, to the normal equations of the shape (variable_projection.cpp). Under a metric whose residual is not linear in ρ (low-e2's logarithm) the
 // colours become ordinary solver parameters (seed 003 §5.1 fits every parameter of E2 at once).
 // Seeded multi-start: start 0 from the table's defaults, the others uniform in the bounds
 // (log-uniform where the bounds span more than two decades).
@@ -18,7 +20,12 @@ namespace brdfkit::fit {
 struct FitOptions {
   int starts = 1;
   std::uint64_t seed = 1;
-  int max_iterations = 100;  // per start
+  int max_iterations = 100;  // per start and level
+  // Solve first on every 64th / 16th / 4th sample of the domain (while ≥ 30 000 samples remain),
+  // each level starting from the previous one's result, then on the whole domain: the last level
+  // alone decides the result, so it is the full domain's optimum (DESIGN.md §7), reached in fewer
+  // full-domain iterations (DESIGN.md §12).
+  bool coarse_to_fine = true;
 };
 
 struct FitResult {

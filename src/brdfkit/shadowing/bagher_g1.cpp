@@ -11,6 +11,8 @@ namespace brdfkit {
 
 namespace {
 
+constexpr double kMaxW = 100.0;  // upper bound of w = π/2 − θ0
+
 // G1 of seed 000 Eq. 9 in the parameters (log λ, w, log k), w = π/2 − θ0:
 // c = log(1 + 1/λ)/w^k turns exp(c (θ − θ0)^k) into (1 + 1/λ)^(((θ − θ0)/w)^k).
 template <class T> T g1_reparam(const T& log_lambda, const T& w, const T& log_k, double theta) {
@@ -75,7 +77,7 @@ BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double>
       for (int c = 0; c <= 14; ++c) {
         Start st;
         st.x[0] = std::log(1e-4) + a * (std::log(1e3) - std::log(1e-4)) / 14;
-        st.x[1] = std::min(4.0, w_drop * std::pow(4.0 / w_drop, b / 8.0));
+        st.x[1] = std::min(kMaxW, w_drop * std::pow(kMaxW / w_drop, b / 8.0));
         st.x[2] = std::log(0.5) + c * (std::log(500.0) - std::log(0.5)) / 14;
         st.ss = sum_sq(st.x, theta, g1);
         if (std::isfinite(st.ss)) grid.push_back(st);
@@ -101,10 +103,12 @@ BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double>
                                x);
     problem.SetParameterLowerBound(x, 0, std::log(1e-8));
     problem.SetParameterUpperBound(x, 0, std::log(1e8));
+    // w and k may both grow large together (θ0 far below 0, k/w finite: the exp(−a(π/2 − θ))
+    // limit of Eq. 9): the old bound w ≤ 4 was active at some grid points (θ0 = −2.4292).
     problem.SetParameterLowerBound(x, 1, 1e-6);
-    problem.SetParameterUpperBound(x, 1, 4.0);
+    problem.SetParameterUpperBound(x, 1, kMaxW);
     problem.SetParameterLowerBound(x, 2, std::log(0.2));
-    problem.SetParameterUpperBound(x, 2, std::log(2000.0));
+    problem.SetParameterUpperBound(x, 2, std::log(1e5));
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::DENSE_QR;
     options.max_num_iterations = 500;
