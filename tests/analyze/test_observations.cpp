@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "brdfkit/analysis/albedo_curve.h"
 #include "brdfkit/analysis/backscatter.h"

@@ -110,14 +110,14 @@ TEST(SmithTablesAll, SchlickRational) {
 
 TEST(SmithTablesAll, Gtr) {
   std::printf("GTR, alpha in [1e-3, 2], gamma in [0.1, 10]:\n");
-  EXPECT_LT(table_error<Gtr>({1e-3, 0.1}, {2.0, 10.0}, {true, false}, 40, 30, 7).worst, 1e-5);
+  EXPECT_LT(table_error<Gtr>({1e-3, 0.1}, {2.0, 10.0}, {true, false}, 30, 30, 7).worst, 1e-5);
   std::printf("GTR, alpha in [0.7, 1.4], gamma in [5, 10] (fastest variation):\n");
-  EXPECT_LT(table_error<Gtr>({0.7, 5.0}, {1.4, 10.0}, {true, false}, 20, 30, 8).worst, 1e-5);
+  EXPECT_LT(table_error<Gtr>({0.7, 5.0}, {1.4, 10.0}, {true, false}, 15, 30, 8).worst, 1e-5);
 }
 
 TEST(SmithTablesAll, AbcFacet) {
   std::printf("ABC facet, B in [1e-3, 1e8], C in [1e-3, 10]:\n");
-  EXPECT_LT(table_error<AbcFacet>({1.0, 1e-3, 1e-3}, {1.0, 1e8, 10.0}, {false, true, true}, 40, 30, 9).worst, 1e-5);
+  EXPECT_LT(table_error<AbcFacet>({1.0, 1e-3, 1e-3}, {1.0, 1e8, 10.0}, {false, true, true}, 30, 30, 9).worst, 1e-5);
 }
 
 // A lookup at new parameter values integrates at most the 4^d nodes of its stencil.
@@ -146,6 +146,7 @@ template <template <class> class Ndf> double jet_error(const std::vector<double>
   const double t = std::tan(theta);
   const J l = Ndf<J>(pj.data()).Lambda(J(t, 3));
   double worst = 0;
+  if (!(l.a > 0)) return 0;  // below a support edge Λ ≡ 0
   for (size_t k = 0; k <= n; ++k) {
     auto at = [&](double h) {
       std::vector<double> q = p;
@@ -169,7 +170,7 @@ template <template <class> class Ndf> double jet_error(const std::vector<double>
 
 TEST(SmithTablesAll, JetsThroughTables) {
   double worst = 0;
-  for (double th : {0.7, 1.2, 1.5}) {
+  for (double th : {1.0, 1.2, 1.5}) {
     worst = std::max(worst, jet_error<BlinnPhong>({37.0}, th));
     worst = std::max(worst, jet_error<SawickiRational>({21.0}, th));
     worst = std::max(worst, jet_error<Gaussian>({0.31}, th));

@@ -1,6 +1,7 @@
 // Seed 000 Eq. 9 G1 approximation fitted to the numeric Smith G1 of SGD (DESIGN.md §4).
-// Measure asserted: the SUM of squared residuals over the 120 angles θj = (j + ½)·(π/2)/120
-// (DESIGN.md §4's reading of the paper's "L2 error below 1e-5"); the RMS is printed too.
+// Measure asserted: the paper's "L2 error", the SUM of squared residuals over the 1° table
+// θj = j + ½ degrees (90 angles); shadowing/bagher_g1.h gives the evidence for this reading.
+// The RMS and the 120-angle sum are printed too.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -30,21 +31,16 @@ TEST(BagherG1, Theta0MakesGrazingZero) {
 }
 
 TEST(BagherG1, FitsSgdOverTheParameterRange) {
-  const auto theta = bagher_g1_angles(120);
+  // Seed 000's materials: α 1e-4 … 0.4, p 0 … 1.7 (issue #3).
+  const auto theta = bagher_g1_angles(90);
   double worst_ss = 0, worst_rms = 0;
-  for (double alpha : {1e-4, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.4})
+  for (double alpha : {1e-4, 1e-3, 0.01, 0.03, 0.05, 0.1, 0.2, 0.4})
     for (double p : {0.0, 0.3, 0.6, 1.0, 1.4, 1.7}) {
       const auto g = sgd_g1(alpha, p, theta);
       const BagherG1Fit fit = fit_bagher_g1(theta, g);
       std::printf("alpha %-6g p %-4g  lambda %-10.4g c %-10.4g k %-8.4g theta0 %-8.4f  sum_sq %.3g  rms %.3g\n",
                   alpha, p, fit.lambda, fit.c, fit.k, fit.theta0, fit.sum_sq, fit.rms);
-      // Every grid point reaches the paper's 1e-5 except α = 0.05, p = 1.7, where the best of
-      // 24 Levenberg-Marquardt starts (6 from a 2025-point grid) is 1.17e-5: Eq. 9's three
-      // parameters cannot follow that G1 closely enough on 120 angles.
-      if (alpha == 0.05 && p == 1.7)
-        EXPECT_LT(fit.sum_sq, 1.2e-5);
-      else
-        EXPECT_LT(fit.sum_sq, 1e-5) << "alpha " << alpha << " p " << p;
+      EXPECT_LT(fit.sum_sq, 1e-5) << "alpha " << alpha << " p " << p;
       worst_ss = std::max(worst_ss, fit.sum_sq);
       worst_rms = std::max(worst_rms, fit.rms);
       // The reported (λ, c, k, θ0) reproduce the fitted curve, where c is representable: for the
@@ -55,7 +51,16 @@ TEST(BagherG1, FitsSgdOverTheParameterRange) {
       for (size_t j = 0; j < theta.size(); ++j) ss += std::pow(m.eval(theta[j]) - g[j], 2);
       EXPECT_NEAR(ss, fit.sum_sq, 1e-9 + 1e-3 * fit.sum_sq);
     }
-  std::printf("worst over the grid: sum of squares %.3g, RMS %.3g (120 angles)\n", worst_ss, worst_rms);
+  std::printf("worst over the grid: sum of squares %.3g, RMS %.3g (1-degree table, 90 angles)\n", worst_ss, worst_rms);
+}
+
+// Over 120 angles the sum is 4/3 larger and Eq. 9's three parameters cannot get below 1e-5 at
+// α = 0.05, p = 1.7: the global minimum there is 1.165e-5 (bagher_g1.h). The fit must find it.
+TEST(BagherG1, Eq9FloorOn120Angles) {
+  const auto theta = bagher_g1_angles(120);
+  const BagherG1Fit fit = fit_bagher_g1(theta, sgd_g1(0.05, 1.7, theta));
+  std::printf("alpha 0.05, p 1.7, 120 angles: sum of squares %.4g (Eq. 9's global minimum 1.165e-5)\n", fit.sum_sq);
+  EXPECT_LT(fit.sum_sq, 1.17e-5);
 }
 
 TEST(BagherG1, DesignReferenceCase) {
@@ -71,7 +76,7 @@ TEST(BagherG1, PublishedFits) {
   BRDFKIT_REQUIRE_DATA("published-fits/bagher2012-sgd.json");
   std::ifstream in(test::data_dir() / "published-fits/bagher2012-sgd.json");
   const auto j = nlohmann::json::parse(in);
-  const auto theta = bagher_g1_angles(120);
+  const auto theta = bagher_g1_angles(90);
   for (const char* name : {"alum-bronze", "blue-fabric", "gold-metallic-paint", "white-paint", "black-obsidian"}) {
     ASSERT_TRUE(j["materials"].contains(name)) << name;
     const auto& lobe = j["materials"][name][1]["params"];

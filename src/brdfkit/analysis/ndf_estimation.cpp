@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <Eigen/Dense>
 #include <boost/math/tools/minima.hpp>
@@ -24,6 +25,23 @@ struct Samples {
   size_t size() const { return a.size(); }
 };
 
+void add_sample(Samples& s, const std::vector<double>& theta, const Vec3d& wi, const Vec3d& wo, double a, const Rgb& m) {
+  if (!(wi.z() > 0 && wo.z() > 0) || !(a > 0) || !m.allFinite()) return;
+  const Vec3d sum = wi + wo;
+  const double len = sum.norm();
+  const double th = std::acos(std::clamp(sum.z() / len, -1.0, 1.0));
+  int j = int(std::upper_bound(theta.begin(), theta.end(), th) - theta.begin()) - 1;
+  j = std::clamp(j, 0, int(theta.size()) - 2);
+  const double t = std::clamp((th - theta[size_t(j)]) / (theta[size_t(j) + 1] - theta[size_t(j)]), 0.0, 1.0);
+  s.a.push_back(a);
+  s.ci.push_back(wi.z());
+  s.co.push_back(wo.z());
+  s.cd.push_back(0.5 * len);
+  s.t.push_back(t);
+  s.j.push_back(j);
+  for (int c = 0; c < 3; ++c) s.y[size_t(c)].push_back(a * m[c]);
+}
+
 Samples gather(const fit::Metric& metric, const std::vector<double>& theta) {
   Samples s;
   fit::MetricChunk scratch;
@@ -31,25 +49,22 @@ Samples gather(const fit::Metric& metric, const std::vector<double>& theta) {
     const fit::MetricChunk& ch = metric.chunk(i, scratch);
     for (size_t k = 0; k < ch.size(); ++k) {
       const Vec3d wi(ch.wi_x[k], ch.wi_y[k], ch.wi_z[k]), wo(ch.wo_x[k], ch.wo_y[k], ch.wo_z[k]);
-      if (!(wi.z() > 0 && wo.z() > 0)) continue;
-      const Vec3d sum = wi + wo;
-      const double len = sum.norm();
-      const double th = std::acos(std::clamp(sum.z() / len, -1.0, 1.0));
-      int j = int(std::upper_bound(theta.begin(), theta.end(), th) - theta.begin()) - 1;
-      j = std::clamp(j, 0, int(theta.size()) - 2);
-      const double t = std::clamp((th - theta[size_t(j)]) / (theta[size_t(j) + 1] - theta[size_t(j)]), 0.0, 1.0);
-      const double a = ch.sqrt_weight[k] * ch.factor[k];
-      s.a.push_back(a);
-      s.ci.push_back(wi.z());
-      s.co.push_back(wo.z());
-      s.cd.push_back(0.5 * len);
-      s.t.push_back(t);
-      s.j.push_back(j);
-      for (int c = 0; c < 3; ++c) s.y[size_t(c)].push_back(a * ch.measured[size_t(c)][k]);
+      add_sample(s, theta, wi, wo, ch.sqrt_weight[k] * ch.factor[k],
+                 Rgb(ch.measured[0][k], ch.measured[1][k], ch.measured[2][k]));
     }
   }
   return s;
 }
+
+// The data's own samples with ngan's weighting (seed 002 Eq. 1: residuals of ρ cosθi, w the
+// sample's measure, which for MERL cells already carries the sines of the solid angles).
+Samples gather(const SampleSet& set, const std::vector<double>& theta) {
+  Samples s;
+  for (size_t k = 0; k < set.size(); ++k)
+    if (set.valid[k]) add_sample(s, theta, set.wi(k), set.wo(k), std::sqrt(set.weight[k]) * set.wi_z[k], set.value(k));
+  return s;
+}
+
 
 // Solves the normal equations with the variables in `fixed_zero` held at 0, moving variables that
 // come out negative into that set until none does (an active-set approximation of NNLS that
@@ -92,14 +107,17 @@ struct State {
 
 class Estimator {
  public:
-  Estimator(const fit::Metric& metric, const NdfEstimationOptions& opt) : metric_(metric), opt_(opt) {
-    const int n = std::max(opt.nodes, 8);
+  // finish: the sum of squared residuals → the reported number (the metric's post-processing).
+  template <class Source>
+  Estimator(const Source& source, std::function<double(double)> finish, const NdfEstimationOptions& opt)
+      : finish_(std::move(finish)), opt_(opt) {
+    const int n = opt.nodes;
     for (int j = 0; j < n; ++j) {
       const double u = double(j) / (n - 1);
       theta_.push_back(u * u * kPi / 2);  // seed 002 §5.1 leaves the table open; MERL's θh spacing
     }
-    s_ = gather(metric, theta_);
-    if (s_.size() == 0) throw InputError("ndf estimation", "the metric has no sample to estimate from");
+    s_ = gather(source, theta_);
+    if (s_.size() == 0) throw InputError("ndf estimation", "no valid sample to estimate from");
   }
   const std::vector<double>& theta() const { return theta_; }
 
@@ -236,10 +254,10 @@ class Estimator {
         sum += r * r;
       }
     }
-    return metric_.finish(metric_.scale() * metric_.scale() * sum);
+    return finish_(sum);
   }
 
-  const fit::Metric& metric_;
+  std::function<double(double)> finish_;
   NdfEstimationOptions opt_;
   std::vector<double> theta_;
   Samples s_;
@@ -247,14 +265,38 @@ class Estimator {
 
 }  // namespace
 
+namespace {
+const NdfEstimationOptions& checked(const NdfEstimationOptions& opt) {
+  if (opt.max_iterations < 0 || opt.max_iterations > 50)
+    throw InputError("ndf estimation", "iterations must be in [0, 50]");
+  if (opt.nodes < 8 || opt.nodes > 2000) throw InputError("ndf estimation", "nodes must be in [8, 2000]");
+  if (opt.f0 && !(*opt.f0 >= 0 && *opt.f0 <= 1)) throw InputError("--f0", "must be in [0, 1]");
+  if (!(opt.smoothing >= 0)) throw InputError("ndf estimation", "smoothing must be >= 0");
+  return opt;
+}
+NdfEstimate run(const Estimator& est, const NdfEstimationOptions& opt);
+}  // namespace
+
 NdfEstimate estimate_tabulated_ndf(const fit::Metric& metric, const NdfEstimationOptions& opt) {
   if (metric.transform() != fit::Transform::Identity)
     throw InputError("metric '" + std::string(metric.id()) + "'",
                      "tabulated-NDF estimation needs a metric whose residual is linear in rho (not low-e2)");
-  if (opt.max_iterations < 0 || opt.max_iterations > 50)
-    throw InputError("ndf estimation", "iterations must be in [0, 50]");
-  if (opt.f0 && !(*opt.f0 >= 0 && *opt.f0 <= 1)) throw InputError("--f0", "must be in [0, 1]");
-  const Estimator est(metric, opt);
+  const Estimator est(metric, [&metric](double sum) { return metric.finish(metric.scale() * metric.scale() * sum); },
+                      checked(opt));
+  return run(est, opt);
+}
+
+NdfEstimate estimate_tabulated_ndf(const SampleSet& samples, const NdfEstimationOptions& opt) {
+  double wsum = 0;
+  for (size_t k = 0; k < samples.size(); ++k)
+    if (samples.valid[k]) wsum += samples.weight[k];
+  if (!(wsum > 0)) throw InputError("ndf estimation", "no valid sample to estimate from");
+  const Estimator est(samples, [wsum](double sum) { return std::sqrt(sum / wsum); }, checked(opt));
+  return run(est, opt);
+}
+
+namespace {
+NdfEstimate run(const Estimator& est, const NdfEstimationOptions& opt) {
   if (opt.f0) return est.run(*opt.f0, opt.max_iterations);
   // F0 in the outermost loop (seed 002 §5.1): Brent on the residual, two masking iterations per
   // trial (the masking moves little with F0), then the full estimate at the best F0.
@@ -262,5 +304,7 @@ NdfEstimate estimate_tabulated_ndf(const fit::Metric& metric, const NdfEstimatio
       [&](double f0) { return est.run(f0, std::min(2, opt.max_iterations)).residual_history.back(); }, 0.0, 1.0, 12);
   return est.run(best.first, opt.max_iterations);
 }
+
+}  // namespace
 
 }  // namespace brdfkit::analysis

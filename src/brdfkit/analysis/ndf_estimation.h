@@ -38,5 +38,8 @@ struct NdfEstimate {
 
 // Throws InputError when the metric has no samples or the estimate degenerates (no specular signal).
 NdfEstimate estimate_tabulated_ndf(const fit::Metric& metric, const NdfEstimationOptions& opt = {});
+// The same least squares on the data's own samples (MERL cells, RGL nodes: exact measured values,
+// no look-up) with ngan's weighting w·cos²θi; residual_history is then √(Σ w (ρ − m)² cos²θi / Σ w).
+NdfEstimate estimate_tabulated_ndf(const SampleSet& samples, const NdfEstimationOptions& opt = {});
 
 }  // namespace brdfkit::analysis

@@ -128,7 +128,7 @@ class Problem {
   void set_stride(size_t s) {
     if (s == stride_ && !blocks_.empty()) return;
     stride_ = s;
-    cache_valid_ = false;
+    cache_valid_ = spare_valid_ = false;
     const double scale = metric_.scale();
     blocks_.assign(metric_.chunk_count(), Block{});
     tbb::parallel_for(size_t(0), blocks_.size(), [&](size_t i) {
@@ -178,7 +178,7 @@ class Problem {
 
   void set_base(const ParamValues& pv) {
     base_ = pv;
-    cache_valid_ = false;
+    cache_valid_ = spare_valid_ = false;
   }
 
  private:
@@ -216,6 +216,14 @@ class Problem {
     });
   }
 
+  void swap_cache() {
+    std::swap(cache_, spare_.bases);
+    std::swap(cache_x_, spare_.x);
+    std::swap(gram_, spare_.gram);
+    std::swap(ym_, spare_.ym);
+    std::swap(cache_valid_, spare_valid_);
+  }
+
   // Basis j of class q in block i at the cached shape.
   const double* basis(size_t i, int q, size_t j) const {
     const size_t K = bases_.size();
@@ -236,9 +244,14 @@ class Problem {
   bool evaluate_projected(const double* x, ParamValues& pv, bool derivatives, Objective& out) {
     const size_t K = bases_.size(), nv = vars_.size(), nb = blocks_.size();
     const size_t Q = size_t(classes_);
-    // 1. Bases at x and their Gram matrices (cached: Ceres asks for derivatives at the point it
-    //    just evaluated).
-    if (!cache_valid_ || !std::equal(cache_x_.begin(), cache_x_.end(), x)) {
+    // 1. Bases at x and their Gram matrices, kept for the last two points: Ceres asks for
+    //    derivatives at the point it just accepted, and the fit's result is its last accepted
+    //    point, which a rejected trial point may have followed.
+    if (cache_valid_ && std::equal(cache_x_.begin(), cache_x_.end(), x)) {
+    } else if (spare_valid_ && std::equal(spare_.x.begin(), spare_.x.end(), x)) {
+      swap_cache();
+    } else {
+      swap_cache();  // the current point becomes the spare one
       cache_.assign(nb, {});
       const size_t stride = Q * (K * K + 3 * K);
       std::vector<double> partial(nb * stride, 0.0);
@@ -671,6 +684,13 @@ class Problem {
   std::vector<double> cache_x_;
   std::vector<Eigen::MatrixXd> gram_;             // <B, B> per class, at cache_x_
   std::array<Eigen::VectorXd, 3> ym_;             // <B, m_c> per channel, at cache_x_
+  struct {
+    std::vector<std::vector<std::vector<double>>> bases;
+    std::vector<double> x;
+    std::vector<Eigen::MatrixXd> gram;
+    std::array<Eigen::VectorXd, 3> ym;
+  } spare_;  // the point cached before cache_x_
+  bool spare_valid_ = false;
 };
 
 // The objective as a Ceres problem of n + 1 residuals instead of the domain's millions: with
@@ -808,6 +828,7 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
       for (double v : ch) finite = finite && std::isfinite(v);
     if (finite && o.cost < best_cost) {
       best_cost = o.cost;
+      best.metric_value = metric.finish(o.cost);
       best.values = pv;
       best.best_start = start;
       best.converged = converged;
@@ -819,7 +840,8 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
                    std::string(model.name()) + "' under metric '" + std::string(metric.id()) + "'");
   best.iterations = total_iterations;
   best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  best.metric_value = metric.value(model, best.values);
+  // metric_value: the fitting metric at the result, summed by the fit itself over the same
+  // domain (Metric::value sums in another order: equal to round-off).
   return best;
 }
 

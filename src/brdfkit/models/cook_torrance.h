@@ -96,8 +96,10 @@ struct CookTorrance {
   // computes, the horizon test selects at the end, and `&` (not `&&`) keeps the loads of wi_z
   // and wo_z unconditional. A short-circuit test makes GCC sink the wo_z load under a branch; a
   // load that "could trap" blocks if-conversion and leaves the loop scalar (DESIGN.md §12; check:
-  // -fopt-info-vec on a file that instantiates this, or bench/bench_model_eval.cpp).
-  static void eval_batch(const double* p, int, std::size_t n, const double* __restrict wix,
+  // -fopt-info-vec on a file that instantiates this, or bench/bench_model_eval.cpp). `flatten`
+  // inlines the distribution, masking and Fresnel calls whatever GCC's inlining budget decides
+  // elsewhere in the translation unit: a call left in the body keeps the loop scalar too.
+  [[gnu::flatten]] static void eval_batch(const double* p, int, std::size_t n, const double* __restrict wix,
                          const double* __restrict wiy, const double* __restrict wiz, const double* __restrict wox,
                          const double* __restrict woy, const double* __restrict woz, double* __restrict out) {
     const Ndf<double> ndf(p + kNdfOffset);

@@ -109,7 +109,7 @@ Vec3d AbcFacet<T>::sample(const Vec2d& u) const
 // Smith Λ table over (log B, log C) of the normalized distribution (A drops out of Λ).
 template <> struct SmithShape<AbcFacet> {
   static constexpr int kDims = 2;
-  static std::vector<SmithAxis> axes() { return {{1e-3, 1e8, 60, true}, {1e-3, 10.0, 40, true}}; }
+  static std::vector<SmithAxis> axes() { return {{1e-3, 1e8, 240, true}, {1e-3, 10.0, 160, true}}; }
   template <class T> static std::array<T, 2> values(const AbcFacet<T>& d) { return {d.B, d.C}; }
   static AbcFacet<double> make(const double* c) {
     const double p[3] = {1.0, c[0], c[1]};

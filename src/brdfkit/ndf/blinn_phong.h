@@ -55,7 +55,7 @@ template <class T> struct BlinnPhong {
 // Beckmann shape of width sqrt(2/(N+2)), a scale family, which the table's t½ shift makes flat.
 template <> struct SmithShape<BlinnPhong> {
   static constexpr int kDims = 1;
-  static std::vector<SmithAxis> axes() { return {{2.0, 1e6 + 2.0, 40, true}}; }
+  static std::vector<SmithAxis> axes() { return {{2.0, 1e6 + 2.0, 100, true}}; }
   template <class T> static std::array<T, 1> values(const BlinnPhong<T>& d) { return {d.N + T(2)}; }
   static BlinnPhong<double> make(const double* c) {
     const double n = c[0] - 2.0;

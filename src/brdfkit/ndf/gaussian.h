@@ -68,7 +68,7 @@ template <class T> struct Gaussian {
 // Smith Λ table over log m (for small m the distribution is Beckmann-like, a scale family).
 template <> struct SmithShape<Gaussian> {
   static constexpr int kDims = 1;
-  static std::vector<SmithAxis> axes() { return {{1e-3, 1.5, 30, true}}; }
+  static std::vector<SmithAxis> axes() { return {{1e-3, 1.5, 120, true}}; }
   template <class T> static std::array<T, 1> values(const Gaussian<T>& d) { return {d.m}; }
 };
 

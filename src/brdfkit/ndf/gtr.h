@@ -98,7 +98,7 @@ template <class T> struct Gtr {
 // since table nodes are integrated lazily (shadowing/smith_table.h).
 template <> struct SmithShape<Gtr> {
   static constexpr int kDims = 2;
-  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 200, true}, {0.1, 10.0, 100, false}}; }
+  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 400, true}, {0.1, 10.0, 400, false}}; }
   template <class T> static std::array<T, 2> values(const Gtr<T>& d) { return {d.alpha, d.gamma}; }
 };
 

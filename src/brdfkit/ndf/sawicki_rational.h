@@ -60,7 +60,7 @@ template <class T> struct SawickiRational {
 // Smith Λ table coordinate N + 3 (log axis; N = 0 allowed, the width scales as 1/sqrt(N) for large N).
 template <> struct SmithShape<SawickiRational> {
   static constexpr int kDims = 1;
-  static std::vector<SmithAxis> axes() { return {{3.0, 1e6 + 3.0, 40, true}}; }
+  static std::vector<SmithAxis> axes() { return {{3.0, 1e6 + 3.0, 80, true}}; }
   template <class T> static std::array<T, 1> values(const SawickiRational<T>& d) { return {d.N + T(3)}; }
   static SawickiRational<double> make(const double* c) {
     const double n = c[0] - 3.0;

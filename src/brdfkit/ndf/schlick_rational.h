@@ -58,18 +58,27 @@ template <class T> struct SchlickRational {
   }
 };
 
-// Smith Λ table over log m, with the support edge: no facet is steeper than tanθ_max, cosθ_max
-// = 1 − m, so Λ = 0 for tanθ ≤ t_e = 1/tanθ_max = (1 − m)/sqrt(m(2 − m)), and near t_e Λ grows
-// like (t − t_e)^{7/2} (P22 vanishes linearly at the edge), which the table's log(t − t_e) axis
-// makes linear.
+// Smith Λ table with the support edge: no facet is steeper than tanθ_max, cosθ_max = 1 − m, so
+// Λ = 0 for tanθ ≤ t_e = 1/tanθ_max = (1 − m)/sqrt(m(2 − m)), and near t_e Λ grows like
+// (t − t_e)^{7/2} (P22 vanishes linearly at the edge), which the table's log(t − t_e) axis makes
+// linear. At m = 1 the support becomes the whole hemisphere (D uniform, Λ ~ t²/4 at small t): the
+// change of exponent moves towards t_e geometrically as 1 − m → 0, so the coordinate is
+// q = m/(1 + δ − m) on a log axis, geometric in m for small m and in 1 + δ − m near 1.
 template <> struct SmithShape<SchlickRational> {
   static constexpr int kDims = 1;
-  static std::vector<SmithAxis> axes() { return {{1e-3, 1.0, 30, true}}; }
-  template <class T> static std::array<T, 1> values(const SchlickRational<T>& d) { return {d.m}; }
+  static constexpr double kDelta = 1e-3;
+  static std::vector<SmithAxis> axes() { return {{1e-3 / ((1 + kDelta) - 1e-3), 1.0 / ((1 + kDelta) - 1.0), 120, true}}; }
+  template <class T> static std::array<T, 1> values(const SchlickRational<T>& d) { return {d.m / (T(1 + kDelta) - d.m)}; }
+  template <class T> static T m_of(const T& q) { return q * T(1 + kDelta) / (T(1) + q); }
+  static SchlickRational<double> make(const double* c) {
+    const double m = m_of(c[0]);
+    return SchlickRational<double>(&m);
+  }
   template <class T> static T tan_edge(const T* c) {
     using std::sqrt;
-    if (!(c[0] < T(1))) return T(0);
-    return (T(1) - c[0]) / sqrt(c[0] * (T(2) - c[0]));
+    const T m = m_of(c[0]);
+    if (!(m < T(1))) return T(0);
+    return (T(1) - m) / sqrt(m * (T(2) - m));
   }
 };
 
