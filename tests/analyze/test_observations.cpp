@@ -14,7 +14,8 @@
 #include "brdfkit/analysis/diffraction_map.h"
 #include "brdfkit/analysis/fresnel_extraction.h"
 #include "brdfkit/core/half_diff.h"
-#include "brdfkit/models/cook_torrance_catalogue.h"
+#include "brdfkit/models/model.h"
+#include "brdfkit/ndf/ggx.h"
 #include "test_util.h"
 
 namespace brdfkit {

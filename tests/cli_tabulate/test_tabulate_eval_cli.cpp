@@ -165,7 +165,7 @@ TEST(SumCli, ModelsCheckAndFit) {
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j.size(), 1u);
   std::vector<std::string> names;
-  for (const auto& p : j[0]["params"]) names.push_back(p["name"]);
+  for (const auto& p : j[0]["params"]) names.push_back(p["name"].get<std::string>());
   EXPECT_EQ(names, (std::vector<std::string>{"kd", "1.ks", "1.alpha", "1.F0", "2.ks", "2.alpha", "2.F0"}));
 
   r = test::run_cli("check lambert+ward+blinn-phong --param 3.N=100 --samples 20000 --theta-o 0 --theta-o 60");

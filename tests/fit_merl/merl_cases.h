@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_brdf.h"
@@ -14,7 +16,7 @@
 
 namespace brdfkit::test {
 
-inline ParamValues with(const Model& m, std::initializer_list<std::pair<const char*, Rgb>> vals) {
+inline ParamValues with(const Model& m, const std::vector<std::pair<const char*, Rgb>>& vals) {
   ParamValues v = ParamValues::defaults(m.params());
   for (const auto& [name, rgb] : vals) {
     const int i = find_param(m.params(), name);

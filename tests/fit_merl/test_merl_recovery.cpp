@@ -25,7 +25,7 @@ using test::with;
 
 struct Case {
   const char* model;
-  std::initializer_list<std::pair<const char*, Rgb>> truth;
+  std::vector<std::pair<const char*, Rgb>> truth;
 };
 
 const Rgb kKd(0.12, 0.08, 0.05), kKs(0.9, 0.7, 0.6);

@@ -55,6 +55,7 @@ double log_width(const std::function<double(double)>& lambda_of_t, double t_edge
 }  // namespace
 
 struct SmithLambdaTable::Node {
+  std::atomic<bool> ready{false};  // fast path: std::call_once costs ~30 ns even when done
   std::once_flag once;
   double log_width = 0.0;
   std::unique_ptr<double[]> row;  // nv_ entries
@@ -80,7 +81,10 @@ SmithLambdaTable::~SmithLambdaTable() = default;
 
 const SmithLambdaTable::Node& SmithLambdaTable::node(size_t flat) const {
   Node& n = nodes_[flat];
-  std::call_once(n.once, [&] { build(flat, n); });
+  if (!n.ready.load(std::memory_order_acquire)) {
+    std::call_once(n.once, [&] { build(flat, n); });
+    n.ready.store(true, std::memory_order_release);
+  }
   return n;
 }
 
