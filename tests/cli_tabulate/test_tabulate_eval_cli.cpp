@@ -113,7 +113,7 @@ TEST(EvalCli, PrintsRhoPerChannelAsTheLibrary) {
   const Brdf b(m, fit::params_from_args(m.params(), params));
   std::string p;
   for (const auto& a : params) p += " --param " + a;
-  const Rgb want = b.eval(spherical_direction(30 * kPi / 180, 0), spherical_direction(35 * kPi / 180, kPi));
+  const Rgb want = b.eval(spherical_direction(30 * kPi / 180, 0.0), spherical_direction(35 * kPi / 180, kPi));
   auto r = test::run_cli("eval " + model + p + " --wi 30,0 --wo 35,180");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   expect_near_rel(parse_rgb(r.out), want, 1e-9, "degrees");
@@ -131,7 +131,7 @@ TEST(EvalCli, PrintsRhoPerChannelAsTheLibrary) {
 
 TEST(EvalCli, PublishedAndSavedFits) {
   BRDFKIT_REQUIRE_DATA("published-fits");
-  const Vec3d wi = spherical_direction(20 * kPi / 180, 0), wo = spherical_direction(25 * kPi / 180, kPi);
+  const Vec3d wi = spherical_direction(20 * kPi / 180, 0.0), wo = spherical_direction(25 * kPi / 180, kPi);
   for (const char* stem : {"bagher2012-sgd", "low2012-smooth-E2", "low2012-cooktorrance-E1",
                            "low2012-ashikhminshirley-E2"}) {
     const auto r = test::run_cli("eval --params " + published(stem).string() + " --material gold-metallic-paint"

@@ -295,7 +295,9 @@ TEST_F(FitAll, CompareShowsThePublishedFitsErrorUnderTheSameMetric) {
       EXPECT_EQ(std::stod(row.at("published_ngan")), published);
       // Its own tabulation: the published fit's error is the look-up's quantization only, below
       // what a Lambertian fit reaches.
-      if (row.at("model") == "lambert") EXPECT_LT(published, 0.5 * std::stod(row.at("ngan")));
+      if (row.at("model") == "lambert") {
+        EXPECT_LT(published, 0.5 * std::stod(row.at("ngan")));
+      }
     } else {
       EXPECT_TRUE(row.at("published_ngan").empty());
     }

@@ -212,7 +212,7 @@ TEST(LobeSum, Chi2FailsWithPdfTimesTwo) {
 TEST(LobeSum, SelectionFollowsAlbedoEstimates) {
   const auto& m = dynamic_cast<const LobeSum&>(model_by_name("cook-torrance+cook-torrance"));
   ParamValues v = values_of(m, {"kd=0.2", "1.ks=0.5", "2.ks=0"});
-  const auto prob = m.selection_probabilities(v.channel(0), 0, spherical_direction(0.5, 0));
+  const auto prob = m.selection_probabilities(v.channel(0), 0, spherical_direction(0.5, 0.0));
   EXPECT_NEAR(prob[1], 0.01, 1e-12);
   EXPECT_NEAR(prob[0], 0.99, 1e-12);
 }

@@ -132,6 +132,14 @@ class Estimator {
     for (size_t k = 0; k < n; ++k) fresnel[k] = schlick.eval(s_.cd[k]);
     State st;
     st.ks = {1.0, 1.0, 1.0};
+    // The masking recomputation is a fixed point D = Φ(D) (Φ: masking of D, then the linear solve)
+    // that plain iteration approaches only linearly: on a synthetic GGX α = 0.2 table the residual
+    // fell by ≈ 0.55 per iteration and D was still 3.5 % off at 59° after five. Anderson
+    // acceleration (Walker & Ni 2011, Eq. 2.1–2.2; depth 3) mixes the last Φ outputs so that the
+    // ≤ 5 iterations of seed 002 §5.1 suffice. The masking is built from the mixed D (x), the
+    // reported D is the last Φ output (consistent with the solved kd, ks).
+    constexpr int kDepth = 3;
+    std::vector<Eigen::VectorXd> xs, phis;  // inputs x_k and outputs Φ(x_k), most recent last
     std::optional<TabulatedCookTorrance> model;
     for (int it = 0; it <= iterations; ++it) {
       // Masking: constant 1 at first (seed 002 §5.1), then from the current D.
@@ -139,22 +147,38 @@ class Estimator {
         const double mask = model ? model->masking().g1(s_.ci[k]) * model->masking().g1(s_.co[k]) : 1.0;
         g[k] = s_.a[k] * fresnel[k] * mask / (4 * s_.ci[k] * s_.co[k]);
       }
-      const std::vector<double> before = st.d;
       for (int inner = 0; inner < 2; ++inner) {
         solve_table(g, st);
         solve_colours(g, st);
       }
-      model.emplace(theta_, st.d);
       e.iterations = it;
       e.residual_history.push_back(residual(g, st));
-      if (!before.empty()) {
-        double change = 0, peak = 0;
-        for (size_t j = 0; j < before.size(); ++j) {
-          change = std::max(change, std::abs(st.d[j] - before[j]));
-          peak = std::max(peak, st.d[j]);
-        }
-        if (change <= opt_.tolerance * peak) break;
+      const Eigen::VectorXd phi = Eigen::Map<const Eigen::VectorXd>(st.d.data(), Eigen::Index(st.d.size()));
+      if (it == iterations) break;
+      if (model) {  // x_k was the input of this Φ
+        const Eigen::VectorXd& x = xs.back();
+        if ((phi - x).cwiseAbs().maxCoeff() <= opt_.tolerance * phi.maxCoeff()) break;
       }
+      Eigen::VectorXd next = phi;
+      if (model) {
+        phis.push_back(phi);
+        const size_t h = xs.size();
+        const int m = int(std::min<size_t>(kDepth, h - 1));
+        if (m > 0) {
+          // min ‖f_k − ΔF γ‖ over the last m residual differences (f = Φ(x) − x).
+          Eigen::MatrixXd df(phi.size(), m), dphi(phi.size(), m);
+          for (int i = 0; i < m; ++i) {
+            const size_t a = h - 1 - size_t(i), b = a - 1;
+            df.col(i) = (phis[a] - xs[a]) - (phis[b] - xs[b]);
+            dphi.col(i) = phis[a] - phis[b];
+          }
+          const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(phi - xs.back());
+          if (gamma.allFinite()) next = (phi - dphi * gamma).cwiseMax(0.0);
+        }
+      }
+      xs.push_back(next);
+      if (xs.size() > size_t(kDepth) + 1) xs.erase(xs.begin()), phis.erase(phis.begin());
+      model.emplace(theta_, std::vector<double>(next.data(), next.data() + next.size()));
     }
     e.d = st.d;
     e.values.values = {std::vector<double>{st.kd[0], st.ks[0], f0}, std::vector<double>{st.kd[1], st.ks[1], f0},
