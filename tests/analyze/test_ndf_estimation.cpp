@@ -64,10 +64,14 @@ TEST(NdfEstimation, RecoversGgxFromTabulatedMaterial) {
               "deg; kd = %.4f %.4f %.4f, ks = %.4f %.4f %.4f\n",
               e.iterations, worst, worst_at, e.values.values[0][0], e.values.values[1][0], e.values.values[2][0],
               e.values.values[0][1], e.values.values[1][1], e.values.values[2][1]);
+    for (double deg = 0; deg < 90; deg += 5)
+      std::printf("  %4.0f deg: D/D_ggx - 1 = %+.4f\n", deg, model.distribution().D(std::cos(deg * kPi / 180)) / ggx.D(std::cos(deg * kPi / 180)) - 1);
   for (double r : e.residual_history) std::printf("  residual after iteration: %.6f\n", r);
-  // Issue 6 asks for < 2 %; five masking iterations reach 3.5 % at 59 deg (the residual still falls at
-  // iteration 5): asserted as measured, the gap is listed as open.
-  EXPECT_LT(worst, 0.04);
+  // Issue 6 asks for < 2 %. With Anderson-accelerated masking iterations the default options stop
+  // after 4 at 2.25 % (59.75 deg); iterating to convergence (tolerance 1e-6) settles at 3.0 %: the
+  // fixed point itself is biased (D tail +3 % over 40-90 deg, kd -0.5 %, ks +1.2 %, residual floor
+  // 1.1e-3), so more iterations do not help. Asserted as measured; the < 2 % goal stays open.
+  EXPECT_LT(worst, 0.025);
   EXPECT_LE(e.iterations, 5);
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(e.values.values[size_t(c)][0], kParams[c][0], 0.01);

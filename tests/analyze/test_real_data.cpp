@@ -30,12 +30,30 @@ void print_backscatter(const std::string& name, const analysis::BackscatterAnaly
   for (const auto& f : a.fits)
     std::printf("  %-22s %-18s err_linear %.5f  err_log %.4f\n", name.c_str(), f.family.c_str(), f.mean_error_linear,
                 f.mean_error_log);
+  for (const auto& f : a.fits)
+    for (size_t c = 0; c < 3; ++c) {
+      std::printf("    %-18s ch%zu rho_d %.4f Fr %.4f shape", f.family.c_str(), c, f.rho_d[c], f.fr[c]);
+      for (double v : f.shape[c]) std::printf(" %.4f", v);
+      std::printf("\n");
+    }
 }
 
 const analysis::BackscatterFit& fit_of(const analysis::BackscatterAnalysis& a, const std::string& family) {
   for (const auto& f : a.fits)
     if (f.family == family) return f;
   throw std::runtime_error("no fit " + family);
+}
+
+// A family fits no worse than its special case: SGD with p = 0 is Beckmann with m² = α (ndf/sgd.h),
+// so in the space the fit minimizes SGD's error is ≤ Beckmann's in every channel.
+void expect_sgd_not_worse_than_beckmann(const analysis::BackscatterAnalysis& a, const std::string& name) {
+  const auto& sgd = fit_of(a, "sgd");
+  const auto& beck = fit_of(a, "beckmann");
+  for (size_t c = 0; c < 3; ++c) {
+    const double es = a.space == analysis::SliceFitSpace::Linear ? sgd.error_linear[c] : sgd.error_log[c];
+    const double eb = a.space == analysis::SliceFitSpace::Linear ? beck.error_linear[c] : beck.error_log[c];
+    EXPECT_LE(es, eb * (1 + 1e-6)) << name << " channel " << c;
+  }
 }
 
 TEST(Backscatter, PinkFeltSliceReportsEveryFamily) {
@@ -54,12 +72,7 @@ TEST(Backscatter, PinkFeltSliceReportsEveryFamily) {
       // A fit can be no worse than its constant part alone: every family reaches < 20 % RMS of the peak.
       EXPECT_LT(f.mean_error_linear, 0.2) << f.family;
     }
-    // SGD contains Beckmann-like shapes (p → 0 gives exp(−x/α), seed 000 Eq. 8): it fits at least as well.
-    const auto& sgd = fit_of(a, "sgd");
-    const double e_sgd = space == analysis::SliceFitSpace::Linear ? sgd.mean_error_linear : sgd.mean_error_log;
-    const double e_beck = space == analysis::SliceFitSpace::Linear ? fit_of(a, "beckmann").mean_error_linear
-                                                                   : fit_of(a, "beckmann").mean_error_log;
-    EXPECT_LE(e_sgd, e_beck * 1.02);
+    expect_sgd_not_worse_than_beckmann(a, "pink-felt");
   }
 }
 
@@ -70,6 +83,7 @@ TEST(Backscatter, GlossyRglMaterialsReportEveryFamily) {
     const auto data = load_measured(rgl(name));
     analysis::BackscatterOptions opt;
     opt.space = analysis::SliceFitSpace::Log;
+    opt.families = {"beckmann", "ggx", "sgd"};  // the comparison of seed 000 Fig. 3 (CI time: the others are on pink-felt)
     const auto a = analysis::analyze_backscatter(*data, opt);
     std::printf("%s back-scattering slice (RGL evaluated at wi = wo), %zu angles, log fit\n", name.c_str(),
                 a.slice.theta_h.size());
@@ -77,6 +91,7 @@ TEST(Backscatter, GlossyRglMaterialsReportEveryFamily) {
     const double sgd = fit_of(a, "sgd").mean_error_log, beck = fit_of(a, "beckmann").mean_error_log,
                  ggx = fit_of(a, "ggx").mean_error_log;
     EXPECT_TRUE(std::isfinite(sgd) && std::isfinite(beck) && std::isfinite(ggx));
+    expect_sgd_not_worse_than_beckmann(a, name);
     sgd_beats_both += sgd < beck && sgd < ggx;
   }
   std::printf("SGD beats Beckmann and GGX on %d of %zu glossy RGL materials (log-space slice fit)\n", sgd_beats_both,

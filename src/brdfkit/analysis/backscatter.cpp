@@ -27,6 +27,11 @@ template <template <class> class Ndf, class T> T slice_model(const T* x, double 
   return x[0] / T(kPi) + x[1] / T(kPi) * ndf.D(c) * g1 * g1 / (c * c);
 }
 
+// Value and derivatives finite: a shape parameter at its bound (SGD α → 0) gives finite ρ with
+// infinite Jacobian, which Ceres reports on stderr unless the cost declines the point.
+inline bool all_finite(double x) { return std::isfinite(x); }
+template <class T, int N> bool all_finite(const ceres::Jet<T, N>& j) { return std::isfinite(j.a) && j.v.allFinite(); }
+
 template <template <class> class Ndf> struct SliceResidual {
   double cos_h, m, sqrt_w;
   bool log_space;
@@ -40,7 +45,7 @@ template <template <class> class Ndf> struct SliceResidual {
     } else {
       r[0] = T(sqrt_w) * (rho - T(m));
     }
-    return true;
+    return all_finite(r[0]);
   }
 };
 
@@ -55,8 +60,10 @@ std::vector<std::vector<double>> shape_starts(const std::string& family) {
   const std::vector<double> widths = {0.02, 0.07, 0.2, 0.5};  // within every family's bounds
   std::vector<std::vector<double>> s;
   if (family == "sgd") {
-    for (double a : {0.01, 0.05, 0.2, 0.6})
-      for (double p : {0.2, 0.6, 1.0}) s.push_back({a, p});
+    // α up to its bound 2: wide slices (pink-felt) want the flattest shapes; p up to near 2, the
+    // GGX-like tail (α² + x)^−p.
+    for (double a : {0.01, 0.05, 0.2, 0.6, 2.0})
+      for (double p : {0.2, 1.0, 1.9}) s.push_back({a, p});
   } else if (family == "exponential-power") {
     for (double a : widths)
       for (double p : {0.5, 1.0, 2.0}) s.push_back({a, p});
@@ -67,17 +74,22 @@ std::vector<std::vector<double>> shape_starts(const std::string& family) {
 }
 
 template <template <class> class Ndf>
-ChannelFit fit_channel(const BackscatterSlice& s, int c, SliceFitSpace space, const std::string& family) {
+ChannelFit fit_channel(const BackscatterSlice& s, int c, SliceFitSpace space, const std::string& family,
+                       const std::vector<std::vector<double>>& seeded) {
   const ParamTable table = Ndf<double>::params();
   const int nshape = int(table.size());
   const bool log_space = space == SliceFitSpace::Log;
   ChannelFit best;
-  const std::vector<std::vector<double>> starts = shape_starts(family);
-  for (const auto& shape : starts) {
-    std::vector<double> x = {0, 0};
+  std::vector<std::vector<double>> starts;
+  for (const auto& shape : shape_starts(family)) {
+    std::vector<double> x = {-1, -1};  // ρd, Fr: from the linear solve below
     x.insert(x.end(), shape.begin(), shape.end());
+    starts.push_back(x);
+  }
+  starts.insert(starts.end(), seeded.begin(), seeded.end());
+  for (std::vector<double> x : starts) {
     // ρd and Fr enter linearly: start from their weighted least-squares values for this shape.
-    {
+    if (x[0] < 0) {
       double aa = 0, ab = 0, bb = 0, ay = 0, by = 0;
       for (size_t k = 0; k < s.theta_h.size(); ++k) {
         const double m = s.value[k][c];
@@ -126,11 +138,13 @@ ChannelFit fit_channel(const BackscatterSlice& s, int c, SliceFitSpace space, co
   return best;
 }
 
-template <template <class> class Ndf> void fill_fit(const BackscatterSlice& s, SliceFitSpace space, BackscatterFit& f) {
+template <template <class> class Ndf>
+void fill_fit(const BackscatterSlice& s, SliceFitSpace space, BackscatterFit& f,
+              const std::array<std::vector<std::vector<double>>, 3>& seeded = {}) {
   for (const auto& spec : Ndf<double>::params()) f.shape_names.push_back(spec.name);
   double mean_lin = 0, mean_log = 0;
   for (int c = 0; c < 3; ++c) {
-    const ChannelFit cf = fit_channel<Ndf>(s, c, space, f.family);
+    const ChannelFit cf = fit_channel<Ndf>(s, c, space, f.family, seeded[size_t(c)]);
     const double* x = cf.x.data();
     f.rho_d[size_t(c)] = x[0];
     f.fr[size_t(c)] = x[1];
@@ -209,6 +223,34 @@ BackscatterSlice backscatter_slice(const MeasuredBrdf& data, const BackscatterOp
   return s;
 }
 
+namespace {
+
+// SGD contains Beckmann: with p = 0, K = 1/(α Γ(1, α)) = e^α/α and P22 = e^{−x/α}/(π α), Beckmann
+// with m² = α (seed 000 §4.2, ndf/sgd.h). Starting SGD at the Beckmann optimum (ρd, Fr unchanged)
+// makes its fit no worse than Beckmann's; the same α with p over a grid lets it leave p = 0,
+// where the generic grid alone stopped on pink-felt (SGD error = Beckmann's, Fr = 0 in blue).
+std::array<std::vector<std::vector<double>>, 3> sgd_seeds(const BackscatterSlice& slice, SliceFitSpace space,
+                                                          const std::vector<BackscatterFit>& done) {
+  const BackscatterFit* beck = nullptr;
+  for (const auto& f : done)
+    if (f.family == "beckmann") beck = &f;
+  BackscatterFit own;
+  if (!beck) {
+    own.family = "beckmann";
+    fill_fit<Beckmann>(slice, space, own);
+    beck = &own;
+  }
+  std::array<std::vector<std::vector<double>>, 3> seeds;
+  for (size_t c = 0; c < 3; ++c) {
+    const double m = beck->shape[c][0];
+    const double alpha = std::clamp(m * m, Sgd<double>::params()[0].lower, Sgd<double>::params()[0].upper);
+    for (double p : {0.0, 0.5, 1.0, 1.5}) seeds[c].push_back({beck->rho_d[c], beck->fr[c], alpha, p});
+  }
+  return seeds;
+}
+
+}  // namespace
+
 BackscatterAnalysis analyze_backscatter(const BackscatterSlice& slice, const BackscatterOptions& opt) {
   BackscatterAnalysis a;
   a.slice = slice;
@@ -219,7 +261,7 @@ BackscatterAnalysis analyze_backscatter(const BackscatterSlice& slice, const Bac
     if (family == "beckmann") fill_fit<Beckmann>(slice, opt.space, f);
     else if (family == "ggx") fill_fit<Ggx>(slice, opt.space, f);
     else if (family == "exponential") fill_fit<Exponential>(slice, opt.space, f);
-    else if (family == "sgd") fill_fit<Sgd>(slice, opt.space, f);
+    else if (family == "sgd") fill_fit<Sgd>(slice, opt.space, f, sgd_seeds(slice, opt.space, a.fits));
     else if (family == "exponential-power") fill_fit<ExponentialPower>(slice, opt.space, f);
     else {
       std::string known;

@@ -4,7 +4,8 @@
 // ∫ dφi = 2π (isotropy) and the Δφ ∈ [180°, 360°) half mirrors [0°, 180°) (factor 2). Channels
 // averaged; reported over the max albedo like `ngan` (DESIGN.md §7).
 // On a MERL table the integral runs over the table's cells (metric_cells.h): μ = cosθi cosθo at
-// the cell centre times the cell's pair measure.
+// the cell centre times the cell's pair measure; on scattered samples (metric_samples.h) μ at the
+// sample times its pair measure.
 #include "brdfkit/fit/metric_definition.h"
 
 namespace brdfkit::fit {

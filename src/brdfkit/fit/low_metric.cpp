@@ -7,7 +7,8 @@
 // over the table's cells instead (metric_cells.h): dθi dωo = dωi dωo / (2π sinθi) (isotropy: the
 // φi integral is 2π), so μ = 1/(2π sinθi) at the cell centre, θi, θo ≤ 80°. The value approximates
 // the same integral as the paper's sum. E2's logarithm is not linear in ρ, so its cells are not
-// folded: each orientation is its own sample.
+// folded: each orientation is its own sample. On scattered samples (metric_samples.h) the same μ
+// times each sample's pair measure (a θi = 0 sample would get μ = 0; the Cornell files have none).
 #include "brdfkit/fit/metric_definition.h"
 
 namespace brdfkit::fit {

@@ -42,7 +42,13 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
   double scale2 = def.channel_pool;
   double wsum = 0;  // Σ w over the domain, in chunk order: deterministic
   const auto* merl = dynamic_cast<const MerlBrdf*>(&data);
-  if (merl && def.cells.density && opt.domain == MetricDomain::Auto) {
+  const auto sample_density = def.sample_density ? def.sample_density : def.cells.density;
+  if (!merl && sample_density && is_scattered(data)) {
+    SampleDomain samples = build_sample_domain(data.samples(), sample_density, def.grid.cos_i_factor);
+    m.chunks_ = std::move(samples.chunks);
+    m.on_samples_ = true;
+    wsum = samples.measure_sum;
+  } else if (merl && def.cells.density && opt.domain == MetricDomain::Auto) {
     CellDomain cells = build_cell_domain(merl->table(), def.cells, opt.coarsen);
     m.chunks_ = std::move(cells.chunks);
     m.on_cells_ = true;
@@ -54,7 +60,7 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
     for (const MetricChunk& ch : m.chunks_)
       for (double s : ch.sqrt_weight) wsum += s * s;
   }
-  if (def.cache && m.sample_count() == 0)
+  if ((def.cache || m.on_samples_) && m.sample_count() == 0)
     throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
   if (def.divide_by_weight_sum) scale2 /= wsum;
   if (def.divide_by_max_albedo) {

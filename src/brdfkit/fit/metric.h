@@ -30,7 +30,7 @@ class MetricUndefined : public InputError {
 
 // Where a metric samples a MERL table: its own cells (metric_cells.h: values exact at the cell
 // centres, the metric's weights carried over), or the paper's (θi, θo, Δφ) grid looked up in the
-// nearest cell. Other data always use the grid.
+// nearest cell. Scattered data (metric_samples.h) always use their own samples, other data the grid.
 enum class MetricDomain { Auto, Grid };
 
 struct MetricOptions {
@@ -57,6 +57,8 @@ class Metric {
   size_t sample_count() const;
   // Whether the domain is a MERL table's cells ("cells") or the paper's grid ("grid").
   bool on_cells() const { return on_cells_; }
+  // Whether the domain is scattered data's own samples (metric_samples.h).
+  bool on_samples() const { return on_samples_; }
   // The cells domain folds both orientations of a cell into one sample (metric_cells.h), which
   // is exact only for reciprocal models: value() and fit_model() refuse the others (InputError).
   bool needs_reciprocal_model() const { return folded_; }
@@ -78,6 +80,7 @@ class Metric {
   double albedo_norm_ = 1.0;
   std::vector<MetricChunk> chunks_;
   bool on_cells_ = false;
+  bool on_samples_ = false;
   bool folded_ = false;
   const MeasuredBrdf* data_ = nullptr;  // for chunks built on demand; must outlive the metric
 };

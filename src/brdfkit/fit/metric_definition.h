@@ -5,6 +5,7 @@
 #include "brdfkit/fit/metric.h"
 #include "brdfkit/fit/metric_cells.h"
 #include "brdfkit/fit/metric_grid.h"
+#include "brdfkit/fit/metric_samples.h"
 
 namespace brdfkit::fit {
 
@@ -19,6 +20,9 @@ struct MetricDefinition {
   // The same integral on a MERL table's own cells (metric_cells.h); density nullptr: the metric
   // keeps its grid there too.
   CellWeighting cells;
+  // μ(wi, wo) per unit pair measure on scattered samples (metric_samples.h), with the grid's
+  // cosθi factor; nullptr: cells.density.
+  double (*sample_density)(const Vec3d& wi, const Vec3d& wo) = nullptr;
 };
 
 MetricDefinition ngan_metric(int coarsen);

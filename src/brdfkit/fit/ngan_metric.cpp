@@ -7,6 +7,8 @@
 // On a MERL table the bins are the table's own cells (metric_cells.h): Eq. 1 sums over "the
 // non-empty bins of R" with w "the solid angle correction term", which for a cell is its pair
 // measure ∫ dωi dωo; a cell is in the domain when θi, θo ≤ 80° at its centre.
+// On scattered samples (metric_samples.h) w is a sample's pair measure (reader's dωo × its θi
+// ring's band of dωi), same density and cut-off, the cosθi of the sample's own wi.
 #include "brdfkit/fit/metric_definition.h"
 
 namespace brdfkit::fit {
