@@ -50,14 +50,14 @@ std::optional<double> published_of(const BatchSummary& s, const std::string& mat
 std::string summary_csv(const BatchSummary& s) {
   const bool compare = !s.published_file.empty();
   std::string out = "material,model,procedure,fit_metric,status";
-  for (auto id : metric_ids()) out += "," + std::string(id);
-  if (compare) out += ",published_" + s.fit_metric;
+  for (auto id : metric_ids()) out.append(",").append(id);
+  if (compare) out.append(",published_").append(s.fit_metric);
   out += ",seconds,iterations,converged,reason\n";
   for (const BatchRow& r : s.rows) {
     out += fmt::format("{},{},{},{},{}", csv_field(r.material), csv_field(r.model), csv_field(s.procedure),
                        s.fit_metric, status_name(r.status));
-    for (auto id : metric_ids()) out += "," + number(r.metric(std::string(id)));
-    if (compare) out += "," + number(published_of(s, r.material));
+    for (auto id : metric_ids()) out.append(",").append(number(r.metric(std::string(id))));
+    if (compare) out.append(",").append(number(published_of(s, r.material)));
     const bool ok = r.status != FitStatus::Failed;
     out += fmt::format(",{},{},{},{}\n", ok ? fmt::format("{:.3f}", r.seconds) : "", ok ? std::to_string(r.iterations) : "",
                        ok ? (r.converged ? "yes" : "no") : "", csv_field(r.reason));

@@ -241,6 +241,23 @@ class Problem {
     return h;
   }
 
+  // The forward-difference points x + h_v e_v (parameter values over `base`), one per solver
+  // variable, with their steps in h.
+  std::vector<ParamValues> shifted_points(const double* x, const ParamValues& base, std::vector<double>& h) const {
+    const size_t nv = vars_.size();
+    h.assign(nv, 0.0);
+    std::vector<ParamValues> points;
+    for (size_t v = 0; v < nv; ++v) {
+      std::vector<double> xh(x, x + nv);
+      h[v] = step(v, x[v]);
+      xh[v] += h[v];
+      ParamValues ph = base;
+      to_values(xh.data(), ph);
+      points.push_back(std::move(ph));
+    }
+    return points;
+  }
+
   bool evaluate_projected(const double* x, ParamValues& pv, bool derivatives, Objective& out) {
     const size_t K = bases_.size(), nv = vars_.size(), nb = blocks_.size();
     const size_t Q = size_t(classes_);
@@ -330,17 +347,8 @@ class Problem {
       offset[q + 1] = offset[q] + L[q] * L[q] + 3 * L[q];
     }
     const size_t stride = 1 + nv + offset[Q];
-    std::vector<ParamValues> shifted;
-    std::vector<double> h(nv);
-    if (derivatives)
-      for (size_t v = 0; v < nv; ++v) {
-        std::vector<double> xh(x, x + nv);
-        h[v] = step(v, x[v]);
-        xh[v] += h[v];
-        ParamValues ph = base_;
-        to_values(xh.data(), ph);
-        shifted.push_back(ph);
-      }
+    std::vector<double> h;
+    const std::vector<ParamValues> shifted = derivatives ? shifted_points(x, base_, h) : std::vector<ParamValues>{};
     std::vector<double> partial(nb * stride, 0.0);
     tbb::parallel_for(size_t(0), nb, [&](size_t i) {
       const Block& b = blocks_[i];
@@ -507,19 +515,9 @@ class Problem {
     const size_t nv = vars_.size(), nb = blocks_.size();
     const Transform t = metric_.transform();
     const size_t stride = 1 + nv + nv * nv;
-    std::vector<ParamValues> shifted;
-    std::vector<double> h(nv);
-    std::vector<double> x(nv);
+    std::vector<double> x(nv), h;
     from_values(pv, x.data());
-    if (derivatives)
-      for (size_t v = 0; v < nv; ++v) {
-        std::vector<double> xh = x;
-        h[v] = step(v, x[v]);
-        xh[v] += h[v];
-        ParamValues ph = pv;
-        to_values(xh.data(), ph);
-        shifted.push_back(ph);
-      }
+    const std::vector<ParamValues> shifted = derivatives ? shifted_points(x.data(), pv, h) : std::vector<ParamValues>{};
     std::vector<double> partial(nb * stride, 0.0);
     tbb::parallel_for(size_t(0), nb, [&](size_t i) {
       const Block& b = blocks_[i];
