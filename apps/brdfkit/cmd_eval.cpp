@@ -9,15 +9,14 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/param_source.h"
+#include "brdf_options.h"
 #include "command.h"
 
 namespace brdfkit::cli {
 namespace {
 
 struct EvalArgs {
-  std::string model, params_file, material;
-  std::vector<std::string> params;
+  BrdfOptions brdf;
   std::vector<double> wi, wo;
   bool radians = false;
   bool json = false;
@@ -37,7 +36,7 @@ Vec3d direction(const std::vector<double>& angles, bool radians, const std::stri
 }
 
 int run_eval(const EvalArgs& a) {
-  const Brdf brdf = fit::brdf_from_arguments(a.model, a.params, a.params_file, a.material);
+  const Brdf brdf = a.brdf.brdf();
   const Vec3d wi = direction(a.wi, a.radians, "--wi"), wo = direction(a.wo, a.radians, "--wo");
   const Rgb rho = brdf.eval(wi, wo);
   if (a.json) {
@@ -48,7 +47,7 @@ int run_eval(const EvalArgs& a) {
                           {"rho", nlohmann::json::array()}};
     // JSON has no NaN: a non-finite value is written as null (and the exit code says so).
     for (int c = 0; c < 3; ++c) out["rho"].push_back(std::isfinite(rho[c]) ? nlohmann::json(rho[c]) : nlohmann::json());
-    if (!a.material.empty()) out["material"] = a.material;
+    if (!a.brdf.material.empty()) out["material"] = a.brdf.material;
     const ParamTable& t = brdf.model().params();
     nlohmann::json pj = nlohmann::json::object();
     for (size_t i = 0; i < t.size(); ++i)
@@ -68,12 +67,7 @@ const CommandRegistration reg("eval", [](CLI::App& app) {
       "eval", "Print rho(wi, wo) in 1/sr for R, G, B of a model with given parameters (MODEL --param ..., or "
               "--params FILE [--material NAME])");
   auto a = std::make_shared<EvalArgs>();
-  sub->add_option("model", a->model, "Model name (see `brdfkit models`; sums such as a+b allowed)");
-  sub->add_option("--param", a->params,
-                  "name=value (all channels), name[r|g|b]=value (one channel) or name=r,g,b; repeatable; overrides "
-                  "the values of --params");
-  sub->add_option("--params,-p", a->params_file, "A fit saved by `brdfkit fit`, or a published-fits file");
-  sub->add_option("--material", a->material, "The material of a published-fits file");
+  add_brdf_options(sub, a->brdf);
   sub->add_option("--wi", a->wi, "Direction towards the light: theta,phi")->required()->delimiter(',')->expected(2);
   sub->add_option("--wo", a->wo, "Direction towards the viewer: theta,phi")->required()->delimiter(',')->expected(2);
   sub->add_flag("--radians,!--degrees", a->radians, "Angles in radians (--degrees, the default: in degrees)");

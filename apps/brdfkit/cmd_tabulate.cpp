@@ -13,24 +13,24 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/param_source.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"
+#include "brdf_options.h"
 #include "command.h"
 
 namespace brdfkit::cli {
 namespace {
 
 struct TabulateArgs {
-  std::string model, params_file, material, output;
-  std::vector<std::string> params;
+  BrdfOptions brdf;
+  std::string output;
   bool clamp_negative = false;
   bool json = false;
 };
 
 int run_tabulate(const TabulateArgs& a) {
   if (a.output.empty()) throw InputError("-o", "an output file is required");
-  const Brdf brdf = fit::brdf_from_arguments(a.model, a.params, a.params_file, a.material);
+  const Brdf brdf = a.brdf.brdf();
   std::atomic<size_t> non_finite{0}, negative{0};
   const merl::Table table = merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) {
     Rgb v = brdf.eval(wi, wo);
@@ -67,12 +67,12 @@ int run_tabulate(const TabulateArgs& a) {
                           {"cells_below_horizon", merl::kCellCount - valid},
                           {"cells_clamped", negative.load()},
                           {"max_rho", {peak[0], peak[1], peak[2]}}};
-    if (!a.material.empty()) out["material"] = a.material;
+    if (!a.brdf.material.empty()) out["material"] = a.brdf.material;
     std::cout << out.dump(2) << "\n";
     return 0;
   }
   std::cout << fmt::format("wrote {}: {}{}\n", a.output, brdf.model().name(),
-                           a.material.empty() ? "" : " (material " + a.material + ")");
+                           a.brdf.material.empty() ? "" : " (material " + a.brdf.material + ")");
   std::cout << fmt::format("cells   {} written, {} below the horizon (raw -1){}\n", valid, merl::kCellCount - valid,
                            negative > 0 ? fmt::format(", {} clamped from negative to 0", negative.load()) : "");
   std::cout << fmt::format("max rho {:.6g} {:.6g} {:.6g} (1/sr)\n", peak[0], peak[1], peak[2]);
@@ -85,12 +85,7 @@ const CommandRegistration reg("tabulate", [](CLI::App& app) {
       "Write a model with given parameters (MODEL --param ..., or --params FILE [--material NAME]) as a MERL-format "
       ".binary file");
   auto a = std::make_shared<TabulateArgs>();
-  sub->add_option("model", a->model, "Model name (see `brdfkit models`; sums such as a+b allowed)");
-  sub->add_option("--param", a->params,
-                  "name=value (all channels), name[r|g|b]=value (one channel) or name=r,g,b; repeatable; overrides "
-                  "the values of --params");
-  sub->add_option("--params,-p", a->params_file, "A fit saved by `brdfkit fit`, or a published-fits file");
-  sub->add_option("--material", a->material, "The material of a published-fits file");
+  add_brdf_options(sub, a->brdf);
   sub->add_option("-o,--output", a->output, "Output MERL .binary file (written atomically)")->required();
   sub->add_flag("--clamp-negative", a->clamp_negative, "Store negative BRDF values as 0 instead of refusing");
   sub->add_flag("--json", a->json, "Print JSON");
