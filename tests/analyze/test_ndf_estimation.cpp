@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include "brdfkit/analysis/ndf_estimation.h"
 #include "brdfkit/analysis/projected_area_masking.h"
@@ -23,7 +24,12 @@ const double kParams[3][4] = {{0.1, 1.0, 0.2, 0.05}, {0.08, 0.9, 0.2, 0.05}, {0.
 const MerlBrdf& synthetic_ggx() {
   static const MerlBrdf brdf(merl::tabulate([](const Vec3d& wi, const Vec3d& wo) {
                                Rgb v;
-                               for (int c = 0; c < 3; ++c) v[c] = model_by_name("cook-torrance-ggx").eval(kParams[c], c, wi, wo);
+                               const double kdmul = std::getenv("NDF_KDMUL") ? std::atof(std::getenv("NDF_KDMUL")) : 1.0;
+                               const double f0 = std::getenv("NDF_F0") ? std::atof(std::getenv("NDF_F0")) : 0.05;
+                               for (int c = 0; c < 3; ++c) {
+                                 double p[4] = {kParams[c][0] * kdmul, kParams[c][1], kParams[c][2], f0};
+                                 v[c] = model_by_name("cook-torrance-ggx").eval(p, c, wi, wo);
+                               }
                                return v;
                              }),
                              "synthetic-ggx-0.2");
@@ -49,7 +55,11 @@ TEST(ProjectedAreaMasking, MatchesClosedFormSmithForGgxAndBeckmann) {
 // From the table's own cells (exact values at the cell centres, ngan's weighting).
 TEST(NdfEstimation, RecoversGgxFromTabulatedMaterial) {
   analysis::NdfEstimationOptions opt;
-  opt.f0 = 0.05;
+  opt.f0 = std::getenv("NDF_F0") ? std::atof(std::getenv("NDF_F0")) : 0.05;
+  if (std::getenv("NDF_IT")) opt.max_iterations = std::atoi(std::getenv("NDF_IT"));
+  if (std::getenv("NDF_TOL")) opt.tolerance = std::atof(std::getenv("NDF_TOL"));
+  if (std::getenv("NDF_NODES")) opt.nodes = std::atoi(std::getenv("NDF_NODES"));
+  if (std::getenv("NDF_SMOOTH")) opt.smoothing = std::atof(std::getenv("NDF_SMOOTH"));
   const analysis::NdfEstimate e = analysis::estimate_tabulated_ndf(synthetic_ggx().samples(), opt);
   const analysis::TabulatedCookTorrance model = e.model();
   const double alpha = 0.2;
@@ -82,3 +92,19 @@ TEST(NdfEstimation, RecoversGgxFromTabulatedMaterial) {
 }  // namespace
 }  // namespace brdfkit
 
+namespace brdfkit { namespace {
+TEST(NdfExperiment, MaskingOfTabulatedTruth) {
+  const double alpha = 0.2;
+  const Ggx<double> ggx(&alpha);
+  const int n = std::getenv("NDF_NODES") ? std::atoi(std::getenv("NDF_NODES")) : 90;
+  std::vector<double> th, d;
+  for (int j = 0; j < n; ++j) { const double u = double(j) / (n - 1); th.push_back(u * u * kPi / 2); d.push_back(ggx.D(std::cos(th.back()))); }
+  const analysis::TabulatedCookTorrance m(th, d);
+  const analysis::ProjectedAreaMasking exact([&](double c) { return ggx.D(c); }, {}, 181);
+  for (double deg : {0., 10., 20., 30., 40., 50., 60., 70., 75., 80., 82., 84., 86., 87., 88., 89., 89.5, 89.9}) {
+    const double c = std::cos(deg * kPi / 180);
+    std::printf("%5.1f deg: D tab/exact %+.2e  G1 tab %.6f  PAM(exact D) %.6f  smith %.6f  rel %+.2e\n", deg,
+                m.distribution().D(c) / ggx.D(c) - 1, m.masking().g1(c), exact.g1(c), smith_g1(ggx, c), m.masking().g1(c) / smith_g1(ggx, c) - 1);
+  }
+}
+}}

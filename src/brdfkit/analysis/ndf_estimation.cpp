@@ -9,6 +9,9 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fresnel/schlick.h"
+#include "brdfkit/ndf/ggx.h"
+#include "brdfkit/shadowing/smith.h"
+#include <cstdlib>
 
 namespace brdfkit::analysis {
 
@@ -144,7 +147,11 @@ class Estimator {
     for (int it = 0; it <= iterations; ++it) {
       // Masking: constant 1 at first (seed 002 §5.1), then from the current D.
       for (size_t k = 0; k < n; ++k) {
-        const double mask = model ? model->masking().g1(s_.ci[k]) * model->masking().g1(s_.co[k]) : 1.0;
+        static const bool true_g = std::getenv("NDF_TRUE_G") != nullptr;
+        static const double alpha_true = 0.2;
+        static const Ggx<double> ggx_true(&alpha_true);
+        const double mask = true_g ? smith_g1(ggx_true, s_.ci[k]) * smith_g1(ggx_true, s_.co[k])
+                            : model ? model->masking().g1(s_.ci[k]) * model->masking().g1(s_.co[k]) : 1.0;
         g[k] = s_.a[k] * fresnel[k] * mask / (4 * s_.ci[k] * s_.co[k]);
       }
       for (int inner = 0; inner < 2; ++inner) {

@@ -41,6 +41,8 @@ FitJobResult run_fit_job(const Model& model, const MeasuredBrdf& data, const std
   FitJobResult r;
   r.fit = pr.fit;
   r.steps = std::move(pr.steps);
+  if (pr.fit.scan_points > 0)  // FitOptions::scan_start
+    r.steps.push_back("start 0 = best of " + std::to_string(pr.fit.scan_points) + " scan points (fit/start_scan.h)");
   FitRecord& rec = r.record;
   rec.model = std::string(model.name());
   rec.values = pr.fit.values;
@@ -66,6 +68,7 @@ nlohmann::json fit_job_json(const FitJobResult& r, const FitJobOptions& opt, con
   j["fit"]["per_channel_shape"] = opt.per_channel_shape;
   j["fit"]["max_iterations"] = opt.max_iterations;
   j["fit"]["best_start"] = r.fit.best_start;
+  j["fit"]["start_scan_points"] = r.fit.scan_points;  // start 0 = best of this many scan points; 0: the defaults
   j["fit"]["steps"] = r.steps;
   if (!material.empty()) j["data"]["material"] = material;
   return j;

@@ -46,8 +46,8 @@ FitJobResult run_fit_job(const Model& model, const MeasuredBrdf& data, const std
                          const std::string& sha256, const FitJobOptions& opt);
 
 // The record's JSON plus the job's options (fit.procedure — null for a plain fit —,
-// fit.per_channel_shape, fit.max_iterations, fit.best_start, fit.steps) and, when given, the
-// material name (data.material).
+// fit.per_channel_shape, fit.max_iterations, fit.best_start, fit.start_scan_points, fit.steps) and,
+// when given, the material name (data.material).
 nlohmann::json fit_job_json(const FitJobResult& r, const FitJobOptions& opt, const std::string& material = "");
 
 // True when `saved` (a fit_job_json document) is the fit of `model` on the data with this

@@ -11,13 +11,23 @@
 
 namespace brdfkit::fit {
 
+bool shape_differs_by_channel(const Model& model, const ParamValues& values) {
+  const ParamTable& table = model.params();
+  for (size_t i = 0; i < table.size(); ++i)
+    if (table[i].scope == Scope::Shared &&
+        !(values.values[0][i] == values.values[1][i] && values.values[0][i] == values.values[2][i]))
+      return true;
+  return false;
+}
+
 nlohmann::json to_json(const FitRecord& r) {
   const Model& model = model_by_name(r.model);
   nlohmann::json params = nlohmann::json::array();
   const ParamTable& table = model.params();
+  const bool per_channel = r.per_channel_shape || shape_differs_by_channel(model, r.values);
   for (size_t i = 0; i < table.size(); ++i)
     params.push_back({{"name", table[i].name},
-                      {"scope", table[i].scope == Scope::PerChannel ? "per-channel" : "shared"},
+                      {"scope", table[i].scope == Scope::PerChannel || per_channel ? "per-channel" : "shared"},
                       {"values", {r.values.values[0][i], r.values.values[1][i], r.values.values[2][i]}}});
   nlohmann::json metrics = nlohmann::json::object();
   for (const MetricReport& m : r.metrics) {
@@ -30,6 +40,7 @@ nlohmann::json to_json(const FitRecord& r) {
   return {{"format", "brdfkit-fit"},
           {"brdfkit_version", r.version},
           {"model", r.model},
+          {"shape", per_channel ? "per-channel" : "shared"},
           {"params", params},
           {"data", {{"file", r.data_file}, {"sha256", r.data_sha256}}},
           {"fit",
@@ -81,6 +92,16 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
   r.version = j.contains("brdfkit_version") && j["brdfkit_version"].is_string() ? j["brdfkit_version"].get<std::string>() : "";
   const ParamTable& table = model.params();
   r.values = ParamValues::defaults(table);
+  // "shape" (written since per-channel shapes are saved) or, in older files, fit.per_channel_shape.
+  if (j.contains("shape")) {
+    const std::string shape = string_field(j, "shape", where);
+    if (shape != "shared" && shape != "per-channel")
+      throw InputError(where + ": field 'shape'", "must be \"shared\" or \"per-channel\", not \"" + shape + "\"");
+    r.per_channel_shape = shape == "per-channel";
+  } else if (j.contains("fit") && j["fit"].is_object() && j["fit"].contains("per_channel_shape") &&
+             j["fit"]["per_channel_shape"].is_boolean()) {
+    r.per_channel_shape = j["fit"]["per_channel_shape"].get<bool>();
+  }
   const auto& params = field(j, "params", where);
   if (!params.is_array()) throw InputError(where + ": field 'params'", "must be an array");
   std::vector<bool> seen(table.size(), false);
@@ -99,9 +120,12 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
                          fmt::format("{} = {} outside its bounds [{}, {}]", name, x, s.lower, s.upper));
       r.values.values[size_t(c)][size_t(i)] = x;
     }
-    if (s.scope == Scope::Shared && !(r.values.values[0][size_t(i)] == r.values.values[1][size_t(i)] &&
-                                      r.values.values[0][size_t(i)] == r.values.values[2][size_t(i)]))
-      throw InputError(at, "parameter '" + name + "' is shared by the three channels but its values differ");
+    if (s.scope == Scope::Shared && !r.per_channel_shape &&
+        !(r.values.values[0][size_t(i)] == r.values.values[1][size_t(i)] &&
+          r.values.values[0][size_t(i)] == r.values.values[2][size_t(i)]))
+      throw InputError(at, "parameter '" + name +
+                               "' is shared by the three channels but its values differ (a fit with one shape per "
+                               "channel says \"shape\": \"per-channel\")");
     seen[size_t(i)] = true;
   }
   for (size_t i = 0; i < table.size(); ++i)
@@ -147,7 +171,8 @@ std::string format_params(const Model& model, const ParamValues& values) {
   std::string out;
   const ParamTable& table = model.params();
   for (size_t i = 0; i < table.size(); ++i) {
-    if (table[i].scope == Scope::Shared)
+    const bool one = values.values[0][i] == values.values[1][i] && values.values[0][i] == values.values[2][i];
+    if (table[i].scope == Scope::Shared && one)
       out += fmt::format("  {:<10} {:.9g}\n", table[i].name, values.values[0][i]);
     else
       out += fmt::format("  {:<10} {:.9g} {:.9g} {:.9g}\n", table[i].name, values.values[0][i], values.values[1][i],

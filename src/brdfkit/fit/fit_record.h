@@ -35,6 +35,11 @@ struct FitRecord {
   bool converged = false;
   std::string message;
   int coarsen = 1;  // grid coarsening the metrics were computed with (1 = the papers' grids)
+  // The lobe shape was fitted per channel (`--per-channel-shape`, the bagher procedure): the
+  // model's Shared parameters hold one value per channel. to_json also sets it whenever a Shared
+  // parameter's values differ, and writes it as "shape": "per-channel" (with every parameter's
+  // "scope" per-channel); a record without that field is read as one shared shape.
+  bool per_channel_shape = false;
   std::vector<MetricReport> metrics;
 };
 
@@ -45,8 +50,12 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
 void save_fit_record(const std::filesystem::path& file, const FitRecord& r);
 FitRecord load_fit_record(const std::filesystem::path& file);
 
+// Whether a Shared parameter of the model has different values in the three channels.
+bool shape_differs_by_channel(const Model& model, const ParamValues& values);
+
 // Human-readable parameter and metric lines, shared by `fit` and `error` so their numbers print
-// identically.
+// identically. A Shared parameter prints one value, or three where its channels differ (a
+// per-channel shape).
 std::string format_params(const Model& model, const ParamValues& values);
 std::string format_metrics(const std::vector<MetricReport>& metrics);
 

@@ -148,12 +148,21 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
   std::vector<double> best(ti.size(), 0.0);
   tbb::parallel_for(size_t(0), ti.size(), [&](size_t i) {
     const Vec3d wi(std::sin(ti[i].angle), 0.0, std::cos(ti[i].angle));
+    std::vector<Vec3d> wo;
+    wo.reserve(to.size() * ph.size());
+    for (const AxisNode& o : to) {
+      const double st = std::sin(o.angle), ct = std::cos(o.angle);
+      for (const AxisNode& p : ph) wo.emplace_back(st * std::cos(p.angle), st * std::sin(p.angle), ct);
+    }
+    std::vector<std::optional<Rgb>> m;
+    lookup_row(data, wi, wo, m);
     Rgb a = Rgb::Zero();
+    size_t k = 0;
     for (const AxisNode& o : to) {
       const double st = std::sin(o.angle), ct = std::cos(o.angle);
       for (const AxisNode& p : ph) {
-        const auto m = data.eval(wi, Vec3d(st * std::cos(p.angle), st * std::sin(p.angle), ct));
-        if (m && m->allFinite()) a += *m * (ct * st * o.weight * p.weight);  // ρ cosθo dωo
+        const auto& v = m[k++];
+        if (v && v->allFinite()) a += *v * (ct * st * o.weight * p.weight);  // ρ cosθo dωo
       }
     }
     best[i] = a.maxCoeff();

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "brdfkit/measured/rgl_tensor.h"
+
 namespace brdfkit::fit {
 
 std::vector<AxisNode> cell_centres(double lo, double hi, int n, double scale) {
@@ -19,34 +21,53 @@ std::vector<AxisNode> regular_nodes(double lo, double hi, double step) {
   return nodes;
 }
 
+void lookup_row(const MeasuredBrdf& data, const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) {
+  if (const auto* rgl = dynamic_cast<const RglBrdf*>(&data)) {
+    rgl->eval_from(wi, wo, out);
+    return;
+  }
+  out.resize(wo.size());
+  for (size_t k = 0; k < wo.size(); ++k) out[k] = data.eval(wi, wo[k]);
+}
+
 MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data) {
   MetricChunk ch;
   const AxisNode ti = grid.theta_i[i];
   const Vec3d wi(std::sin(ti.angle), 0.0, std::cos(ti.angle));
   const size_t n = grid.theta_o.size() * grid.phi.size();
-  for (auto* v : {&ch.wi_x, &ch.wi_y, &ch.wi_z, &ch.wo_x, &ch.wo_y, &ch.wo_z, &ch.sqrt_weight, &ch.factor})
-    v->reserve(n);
-  for (auto& m : ch.measured) m.reserve(n);
-  const double factor = grid.cos_i_factor ? wi.z() : 1.0;
+  // The nodes with a weight and both directions above the horizon, in (θo, φ) order.
+  std::vector<Vec3d> wo;
+  std::vector<double> weight;
+  wo.reserve(n);
+  weight.reserve(n);
   for (const AxisNode& to : grid.theta_o) {
     const double st = std::sin(to.angle), ct = std::cos(to.angle);
     for (const AxisNode& ph : grid.phi) {
       const double w = ti.weight * to.weight * ph.weight;
       if (!(w > 0)) continue;
-      const Vec3d wo(st * std::cos(ph.angle), st * std::sin(ph.angle), ct);
-      if (!(wi.z() > 0 && wo.z() > 0)) continue;
-      const std::optional<Rgb> m = data.eval(wi, wo);
-      if (!m || !m->allFinite()) continue;
-      ch.wi_x.push_back(wi.x());
-      ch.wi_y.push_back(wi.y());
-      ch.wi_z.push_back(wi.z());
-      ch.wo_x.push_back(wo.x());
-      ch.wo_y.push_back(wo.y());
-      ch.wo_z.push_back(wo.z());
-      ch.sqrt_weight.push_back(std::sqrt(w));
-      ch.factor.push_back(factor);
-      for (int c = 0; c < 3; ++c) ch.measured[size_t(c)].push_back((*m)[c]);
+      const Vec3d o(st * std::cos(ph.angle), st * std::sin(ph.angle), ct);
+      if (!(wi.z() > 0 && o.z() > 0)) continue;
+      wo.push_back(o);
+      weight.push_back(w);
     }
+  }
+  std::vector<std::optional<Rgb>> m;
+  lookup_row(data, wi, wo, m);
+  for (auto* v : {&ch.wi_x, &ch.wi_y, &ch.wi_z, &ch.wo_x, &ch.wo_y, &ch.wo_z, &ch.sqrt_weight, &ch.factor})
+    v->reserve(wo.size());
+  for (auto& c : ch.measured) c.reserve(wo.size());
+  const double factor = grid.cos_i_factor ? wi.z() : 1.0;
+  for (size_t k = 0; k < wo.size(); ++k) {
+    if (!m[k] || !m[k]->allFinite()) continue;
+    ch.wi_x.push_back(wi.x());
+    ch.wi_y.push_back(wi.y());
+    ch.wi_z.push_back(wi.z());
+    ch.wo_x.push_back(wo[k].x());
+    ch.wo_y.push_back(wo[k].y());
+    ch.wo_z.push_back(wo[k].z());
+    ch.sqrt_weight.push_back(std::sqrt(weight[k]));
+    ch.factor.push_back(factor);
+    for (int c = 0; c < 3; ++c) ch.measured[size_t(c)].push_back((*m[k])[c]);
   }
   return ch;
 }

@@ -12,6 +12,7 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/box_least_squares.h"
+#include "brdfkit/fit/start_scan.h"
 
 namespace brdfkit::fit {
 
@@ -98,6 +99,7 @@ class Problem {
         for (int c = 0; c < 3; ++c) vars_.push_back({int(p), c});
     }
     classes_ = channel_independent() ? 1 : 3;
+    if (!project_ && !lin.empty()) setup_transformed(lin);  // a residual not linear in ρ (low-e2)
     for (size_t j = 0; j < bases_.size(); ++j) {
       constant_.push_back(shape_independent(j));
       if (!constant_.back()) varying_.push_back(j);
@@ -128,7 +130,7 @@ class Problem {
   void set_stride(size_t s) {
     if (s == stride_ && !blocks_.empty()) return;
     stride_ = s;
-    cache_valid_ = spare_valid_ = false;
+    cache_valid_ = spare_valid_ = last_.valid = false;
     const double scale = metric_.scale();
     blocks_.assign(metric_.chunk_count(), Block{});
     tbb::parallel_for(size_t(0), blocks_.size(), [&](size_t i) {
@@ -167,18 +169,30 @@ class Problem {
   // The objective at x; with `solved`, the colours of the projection are written into it (and
   // x's values). False when the model is not finite on the domain.
   bool evaluate(const double* x, bool derivatives, Objective& out, ParamValues* solved = nullptr) {
+    // On a bounded problem Ceres' projected line search asks for derivatives at a trial point,
+    // then for its cost, then (once accepted) for derivatives there again: the last successful
+    // result answers the repeats (the same numbers: the evaluation is deterministic).
+    if (last_.valid && (last_.derivatives || !derivatives) && std::equal(last_.x.begin(), last_.x.end(), x)) {
+      out = last_.objective;
+      if (solved) *solved = last_.solved;
+      return true;
+    }
     ParamValues pv = base_;
     to_values(x, pv);
-    const bool ok = project_ ? evaluate_projected(x, pv, derivatives, out) : evaluate_plain(pv, derivatives, out);
+    std::fprintf(stderr, "SPEEDDBG stride %zu deriv %d x0 %.17g\n", stride_, int(derivatives), vars_.empty() ? 0.0 : x[0]);
+    const bool ok = project_  ? evaluate_projected(x, pv, derivatives, out)
+                    : tr_.on  ? evaluate_transformed(x, pv, derivatives, out)
+                              : evaluate_plain(pv, derivatives, out);
     if (!ok || !std::isfinite(out.cost)) return false;
     if (derivatives && (!out.gradient.allFinite() || !out.jtj.allFinite())) return false;
     if (solved) *solved = pv;
+    last_ = {true, derivatives, std::vector<double>(x, x + vars_.size()), out, pv};
     return true;
   }
 
   void set_base(const ParamValues& pv) {
     base_ = pv;
-    cache_valid_ = spare_valid_ = false;
+    cache_valid_ = spare_valid_ = last_.valid = false;
   }
 
  private:
@@ -197,6 +211,26 @@ class Problem {
     return p;
   }
 
+  // Evaluates the bases `js` of class q at the shape of pv on block b into out(j). A Fresnel-like
+  // pair (the bases at P_lo and P_hi, adjacent in bases_) takes one Model::eval_batch_pair pass:
+  // Cook-Torrance computes D and G once for both (DESIGN.md §12).
+  template <class Out> void eval_bases(const ParamValues& pv, int q, const Block& b, const std::vector<size_t>& js,
+                                       Out&& out) const {
+    for (size_t a = 0; a < js.size(); ++a) {
+      const size_t j = js[a];
+      const std::vector<double> p = basis_params(pv, q, j);
+      const Basis& bj = bases_[j];
+      if (bj.affine >= 0 && a + 1 < js.size() && js[a + 1] == j + 1 && bases_[j + 1].lin == bj.lin &&
+          bases_[j + 1].affine == bj.affine) {
+        model_.eval_batch_pair(p.data(), q, bj.affine, bj.affine_value, bases_[j + 1].affine_value, b.n, b.d, out(j),
+                               out(j + 1));
+        ++a;
+      } else {
+        model_.eval_batch(p.data(), q, b.n, b.d, out(j));
+      }
+    }
+  }
+
   void fill_constant_bases() {
     const size_t K = bases_.size();
     const ParamValues pv = ParamValues::defaults(table_);
@@ -205,14 +239,15 @@ class Problem {
       const Block& b = blocks_[i];
       auto& store = const_bases_[i];
       store.assign(size_t(classes_) * K, {});
+      std::vector<size_t> js;
+      for (size_t j = 0; j < K; ++j)
+        if (constant_[j]) js.push_back(j);
       for (int q = 0; q < classes_; ++q)
-        for (size_t j = 0; j < K; ++j) {
-          if (!constant_[j]) continue;
+        eval_bases(pv, q, b, js, [&](size_t j) {
           auto& v = store[size_t(q) * K + j];
           v.resize(b.n);
-          const std::vector<double> p = basis_params(pv, q, j);
-          model_.eval_batch(p.data(), q, b.n, b.d, v.data());
-        }
+          return v.data();
+        });
     });
   }
 
@@ -276,12 +311,11 @@ class Problem {
         const Block& b = blocks_[i];
         cache_[i].assign(Q * K, {});
         for (size_t q = 0; q < Q; ++q)
-          for (size_t j : varying_) {
+          eval_bases(pv, int(q), b, varying_, [&](size_t j) {
             auto& v = cache_[i][q * K + j];
             v.resize(b.n);
-            const std::vector<double> p = basis_params(pv, int(q), j);
-            model_.eval_batch(p.data(), int(q), b.n, b.d, v.data());
-          }
+            return v.data();
+          });
         double* acc = partial.data() + i * stride;
         for (size_t q = 0; q < Q; ++q) {
           double* G = acc + q * (K * K + 3 * K);
@@ -356,14 +390,19 @@ class Problem {
       std::vector<std::vector<double>> dv(Q * nv * K);  // d_vj of class q at [(q·nv + v)·K + j]
       if (derivatives)
         for (size_t q = 0; q < Q; ++q)
-          for (const auto& [v, j] : ext[q]) {
-            auto& d = dv[(q * nv + v) * K + j];
-            d.resize(b.n);
-            const std::vector<double> p = basis_params(shifted[v], int(q), j);
-            model_.eval_batch(p.data(), int(q), b.n, b.d, d.data());
-            const double* b0 = basis(i, int(q), j);
+          for (size_t v = 0; v < nv; ++v) {
+            if (!affects(vars_[v], int(q))) continue;
+            eval_bases(shifted[v], int(q), b, varying_, [&](size_t j) {
+              auto& d = dv[(q * nv + v) * K + j];
+              d.resize(b.n);
+              return d.data();
+            });
             const double inv = 1.0 / h[v];
-            for (size_t k = 0; k < b.n; ++k) d[k] = (d[k] - b0[k]) * inv;
+            for (size_t j : varying_) {
+              double* d = dv[(q * nv + v) * K + j].data();
+              const double* b0 = basis(i, int(q), j);
+              for (size_t k = 0; k < b.n; ++k) d[k] = (d[k] - b0[k]) * inv;
+            }
           }
       std::vector<double> r(b.n), g(b.n);
       for (int c = 0; c < 3; ++c) {
@@ -569,6 +608,271 @@ class Problem {
     return true;
   }
 
+  // ---- A residual not linear in ρ (low-e2's ln(1 + ·), seed 003 Eq. 32) -------------------
+  // The colours cannot be projected out, so they stay solver variables (seed 003 §5.1 fits every
+  // parameter of E2 at once), but ρ is still linear in them: ρ_c = Σ_j β_cj b_j(s), b_j the model
+  // with colour j = 1 and the others 0 at the shape s. So the model is evaluated only for the
+  // bases (once for R, G and B when it ignores the channel; a basis that no shape variable moves,
+  // like Lambert's 1/π, once per stride), the colour columns of the Jacobian are exact
+  // (∂r/∂β_cj = r′ b_j with r′ = rw f T′(f ρ)), and only the shape columns take forward differences,
+  // of the bases: ∂r/∂s_v = r′ Σ_j β_cj ∂b_j/∂s_v. T(f m) is computed once per stride.
+  void setup_transformed(const std::vector<int>& lin) {
+    tr_.on = true;
+    tr_.lin = lin;
+    std::vector<int> colour_of(table_.size(), -1);
+    for (size_t j = 0; j < lin.size(); ++j) colour_of[size_t(lin[j])] = int(j);
+    for (auto& v : tr_.var_of) v.assign(lin.size(), -1);
+    for (size_t v = 0; v < vars_.size(); ++v) {
+      const int j = colour_of[size_t(vars_[v].param)];
+      if (j >= 0) tr_.var_of[size_t(vars_[v].channel)][size_t(j)] = int(v);  // per-channel: channel ≥ 0
+      else tr_.shape.push_back(v);
+    }
+    // One basis set for R, G, B when no shape variable is per channel and the model ignores the
+    // channel (probed; evaluate_transformed also compares the channels' parameters).
+    tr_.channel_free = true;
+    for (size_t v : tr_.shape) tr_.channel_free = tr_.channel_free && vars_[v].channel < 0;
+    const ParamValues pv = ParamValues::defaults(table_);
+    for (size_t j = 0; j < lin.size() && tr_.channel_free; ++j) {
+      const std::vector<double> p = tr_params(pv, 0, j);
+      for (int k = 0; k < 16 && tr_.channel_free; ++k) {
+        const auto [wi, wo] = probe(k);
+        const double v0 = model_.eval(p.data(), 0, wi, wo);
+        for (int c = 1; c < 3; ++c) tr_.channel_free = tr_.channel_free && model_.eval(p.data(), c, wi, wo) == v0;
+      }
+    }
+    // A basis is constant when moving every shape variable (to a point inside its bounds) leaves
+    // it unchanged at the probes.
+    tr_.constant.assign(lin.size(), true);
+    for (size_t j = 0; j < lin.size(); ++j)
+      for (int c = 0; c < 3 && tr_.constant[j]; ++c) {
+        const std::vector<double> a = tr_params(pv, c, j);
+        std::vector<double> b = a;
+        for (size_t v : tr_.shape) {
+          const ParamSpec& s = table_[size_t(vars_[v].param)];
+          if (affects(vars_[v], c)) b[size_t(vars_[v].param)] = s.lower + 0.371 * (s.upper - s.lower);
+        }
+        for (int k = 0; k < 12 && tr_.constant[j]; ++k) {
+          const auto [wi, wo] = probe(k);
+          tr_.constant[j] = model_.eval(a.data(), c, wi, wo) == model_.eval(b.data(), c, wi, wo);
+        }
+      }
+  }
+
+  // Channel c's parameters of transformed basis j: colour j = 1, the other colours 0.
+  std::vector<double> tr_params(const ParamValues& pv, int c, size_t j) const {
+    std::vector<double> p = pv.values[size_t(c)];
+    for (int l : tr_.lin) p[size_t(l)] = 0.0;
+    p[size_t(tr_.lin[j])] = 1.0;
+    return p;
+  }
+
+  // Basis classes at pv: 1 when R, G, B share one basis set, else 3.
+  size_t tr_classes(const ParamValues& pv) const {
+    if (!tr_.channel_free) return 3;
+    for (size_t j = 0; j < tr_.lin.size(); ++j)
+      for (int c = 1; c < 3; ++c)
+        if (tr_params(pv, c, j) != tr_params(pv, 0, j)) return 3;
+    return 1;
+  }
+
+  // T′(z): the slope of the metric's transform (0 where apply_transform clamps).
+  double transform_slope(double z) const {
+    if (metric_.transform() == Transform::Identity) return 1.0;
+    return z > -1.0 + 1e-12 ? 1.0 / (1.0 + z) : 0.0;
+  }
+
+  // Makes tr_.bases hold every basis at pv's shape on the current stride (constant bases at the
+  // table's default shape, evaluated once per stride), and tr_.tm = T(f m) per block and channel.
+  void tr_prepare(const ParamValues& pv, size_t Q) {
+    const size_t K = tr_.lin.size(), nb = blocks_.size();
+    const Transform t = metric_.transform();
+    if (tr_.stride != stride_ || tr_.blocks != nb) {
+      tr_.stride = stride_;
+      tr_.blocks = nb;
+      tr_.keys.assign(3 * K, {});
+      tr_.bases.assign(nb, std::vector<std::vector<double>>(3 * K));
+      tr_.tm.assign(nb, {});
+      tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+        const Block& b = blocks_[i];
+        tr_.tm[i].resize(3 * b.n);
+        for (int c = 0; c < 3; ++c)
+          for (size_t k = 0; k < b.n; ++k) tr_.tm[i][size_t(c) * b.n + k] = apply_transform(t, b.f[k] * b.m[c][k]);
+      });
+    }
+    const ParamValues defaults = ParamValues::defaults(table_);
+    std::vector<std::pair<size_t, std::vector<double>>> todo;  // (q·K + j, parameters)
+    for (size_t q = 0; q < Q; ++q)
+      for (size_t j = 0; j < K; ++j) {
+        std::vector<double> p = tr_params(pv, int(q), j);
+        if (tr_.constant[j])  // the shape variables at their defaults: one key per stride
+          for (size_t v : tr_.shape) p[size_t(vars_[v].param)] = defaults.values[q][size_t(vars_[v].param)];
+        if (tr_.keys[q * K + j] != p) todo.push_back({q * K + j, std::move(p)});
+      }
+    if (todo.empty()) return;
+    tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+      const Block& b = blocks_[i];
+      for (const auto& [qj, p] : todo) {
+        auto& v = tr_.bases[i][qj];
+        v.resize(b.n);
+        model_.eval_batch(p.data(), int(qj / K), b.n, b.d, v.data());
+      }
+    });
+    for (auto& [qj, p] : todo) tr_.keys[qj] = std::move(p);
+  }
+
+  bool evaluate_transformed(const double* x, const ParamValues& pv, bool derivatives, Objective& out) {
+    const size_t K = tr_.lin.size(), nv = vars_.size(), nb = blocks_.size(), S = tr_.shape.size();
+    const size_t Q = tr_classes(pv);
+    tr_prepare(pv, Q);
+    std::vector<double> h;
+    const std::vector<ParamValues> shifted = derivatives ? shifted_points(x, base_, h) : std::vector<ParamValues>{};
+    // Columns of channel c: its K colours, then the shape variables that affect it.
+    std::array<std::vector<int>, 3> cols;
+    std::array<std::vector<size_t>, 3> shape_of;  // indices into tr_.shape
+    for (int c = 0; c < 3; ++c) {
+      cols[size_t(c)] = tr_.var_of[size_t(c)];
+      for (size_t s = 0; s < S; ++s)
+        if (affects(vars_[tr_.shape[s]], c)) {
+          cols[size_t(c)].push_back(int(tr_.shape[s]));
+          shape_of[size_t(c)].push_back(s);
+        }
+    }
+    const size_t M = K + S;  // an upper bound of every channel's column count
+    const size_t stride = 3 * (1 + M + M * M);
+    std::vector<double> partial(nb * stride, 0.0);
+    std::array<std::vector<double>, 3> beta;
+    for (int c = 0; c < 3; ++c)
+      for (size_t j = 0; j < K; ++j) beta[size_t(c)].push_back(pv.values[size_t(c)][size_t(tr_.lin[j])]);
+    tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+      const Block& b = blocks_[i];
+      // ∂b_j/∂s of each class by forward differences (constant bases have none).
+      std::vector<std::vector<double>> d(derivatives ? Q * S * K : 0);  // [(q·S + s)·K + j]
+      for (size_t q = 0; q < Q && derivatives; ++q)
+        for (size_t s = 0; s < S; ++s) {
+          const size_t v = tr_.shape[s];
+          if (!affects(vars_[v], int(q))) continue;
+          const double inv = 1.0 / h[v];
+          for (size_t j = 0; j < K; ++j) {
+            if (tr_.constant[j]) continue;
+            auto& dj = d[(q * S + s) * K + j];
+            dj.resize(b.n);
+            const std::vector<double> p = tr_params(shifted[v], int(q), j);
+            model_.eval_batch(p.data(), int(q), b.n, b.d, dj.data());
+            const double* b0 = tr_.bases[i][q * K + j].data();
+            for (size_t k = 0; k < b.n; ++k) dj[k] = (dj[k] - b0[k]) * inv;
+          }
+        }
+      std::vector<double> a(M);
+      for (int c = 0; c < 3; ++c) {
+        const size_t q = Q == 1 ? 0 : size_t(c);
+        double* acc = partial.data() + i * stride + size_t(c) * (1 + M + M * M);
+        double* grad = acc + 1;
+        double* jtj = grad + M;
+        const size_t mc = cols[size_t(c)].size();
+        const double* tm = tr_.tm[i].data() + size_t(c) * b.n;
+        std::vector<const double*> bj(K);
+        for (size_t j = 0; j < K; ++j) bj[j] = tr_.bases[i][q * K + j].data();
+        const std::vector<double>& bc = beta[size_t(c)];
+        double cost = 0;
+        for (size_t k = 0; k < b.n; ++k) {
+          double rho = 0;
+          for (size_t j = 0; j < K; ++j) rho += bc[j] * bj[j][k];
+          const double z = b.f[k] * rho;
+          const double r = b.rw[k] * (apply_transform(metric_.transform(), z) - tm[k]);
+          cost += r * r;
+          if (!derivatives) continue;
+          const double slope = b.rw[k] * b.f[k] * transform_slope(z);
+          for (size_t j = 0; j < K; ++j) a[j] = slope * bj[j][k];
+          for (size_t m = K; m < mc; ++m) {
+            const size_t s = shape_of[size_t(c)][m - K];
+            double drho = 0;
+            for (size_t j = 0; j < K; ++j)
+              if (!tr_.constant[j]) drho += bc[j] * d[(q * S + s) * K + j][k];
+            a[m] = slope * drho;
+          }
+          for (size_t m = 0; m < mc; ++m) {
+            grad[m] += a[m] * r;
+            for (size_t l = m; l < mc; ++l) jtj[m * M + l] += a[m] * a[l];
+          }
+        }
+        acc[0] = cost;
+      }
+    });
+    out.cost = 0;
+    out.gradient = Eigen::VectorXd::Zero(Index(nv));
+    out.jtj = Eigen::MatrixXd::Zero(Index(nv), Index(nv));
+    for (size_t i = 0; i < nb; ++i)  // block order: deterministic sums
+      for (size_t c = 0; c < 3; ++c) {
+        const double* acc = partial.data() + i * stride + c * (1 + M + M * M);
+        out.cost += acc[0];
+        if (!derivatives) continue;
+        const std::vector<int>& col = cols[c];
+        for (size_t m = 0; m < col.size(); ++m) {
+          if (col[m] < 0) continue;  // a colour fixed by its bounds
+          out.gradient[col[m]] += acc[1 + m];
+          for (size_t l = m; l < col.size(); ++l) {
+            if (col[l] < 0) continue;
+            const double v = acc[1 + M + m * M + l];
+            out.jtj(col[m], col[l]) += v;
+            if (col[l] != col[m]) out.jtj(col[l], col[m]) += v;
+          }
+        }
+      }
+    return true;
+  }
+
+ public:
+  // Under a transformed residual, sets pv's colours to the best ones for pv's shape under the
+  // residual linearized about the data, T(f ρ) − T(f m) ≈ T′(f m) f (ρ − m): a weighted
+  // bound-constrained linear solve per channel on the current stride, so every start begins
+  // with colours that fit its shape. No-op for other residuals.
+  void start_colours(ParamValues& pv) {
+    if (!tr_.on) return;
+    const size_t K = tr_.lin.size(), nb = blocks_.size();
+    const size_t Q = tr_classes(pv);
+    tr_prepare(pv, Q);
+    const size_t stride = 3 * (K * K + K);
+    std::vector<double> partial(nb * stride, 0.0);
+    tbb::parallel_for(size_t(0), nb, [&](size_t i) {
+      const Block& b = blocks_[i];
+      for (int c = 0; c < 3; ++c) {
+        const size_t q = Q == 1 ? 0 : size_t(c);
+        double* G = partial.data() + i * stride + size_t(c) * (K * K + K);
+        for (size_t k = 0; k < b.n; ++k) {
+          const double fm = b.f[k] * b.m[c][k];
+          const double w = b.rw[k] * b.f[k] * transform_slope(std::max(fm, 0.0));
+          const double w2 = w * w;
+          for (size_t j = 0; j < K; ++j) {
+            const double bj = tr_.bases[i][q * K + j][k];
+            for (size_t l = j; l < K; ++l) G[j * K + l] += w2 * bj * tr_.bases[i][q * K + l][k];
+            G[K * K + j] += w2 * bj * b.m[c][k];
+          }
+        }
+      }
+    });
+    for (int c = 0; c < 3; ++c) {
+      Eigen::MatrixXd G = Eigen::MatrixXd::Zero(Index(K), Index(K));
+      Eigen::VectorXd y = Eigen::VectorXd::Zero(Index(K)), lo = y, hi = y;
+      for (size_t i = 0; i < nb; ++i) {  // block order: deterministic sums
+        const double* g = partial.data() + i * stride + size_t(c) * (K * K + K);
+        for (size_t j = 0; j < K; ++j) {
+          for (size_t l = j; l < K; ++l) G(Index(j), Index(l)) += g[j * K + l];
+          y[Index(j)] += g[K * K + j];
+        }
+      }
+      G = G.selfadjointView<Eigen::Upper>();
+      for (size_t j = 0; j < K; ++j) {
+        lo[Index(j)] = table_[size_t(tr_.lin[j])].lower;
+        hi[Index(j)] = table_[size_t(tr_.lin[j])].upper;
+      }
+      if (!G.allFinite() || !y.allFinite()) return;
+      const Eigen::VectorXd beta = box_least_squares(G, y, lo, hi);
+      for (size_t j = 0; j < K; ++j) pv.values[size_t(c)][size_t(tr_.lin[j])] = beta[Index(j)];
+    }
+  }
+
+ private:
+
   // β (per channel, per basis) → parameter values: linear ones directly, a pair (v, u) as
   // L = u + v, P = P_lo + (P_hi − P_lo) u/(u + v).
   void write_colours(const std::array<Eigen::VectorXd, 3>& beta, ParamValues& pv) const {
@@ -689,6 +993,25 @@ class Problem {
     std::array<Eigen::VectorXd, 3> ym;
   } spare_;  // the point cached before cache_x_
   bool spare_valid_ = false;
+  struct {
+    bool valid = false;
+    bool derivatives = false;
+    std::vector<double> x;
+    Objective objective;
+    ParamValues solved;
+  } last_;  // the last successful evaluate(), at the current stride and base
+  struct {
+    bool on = false;                       // a transformed residual with colours (evaluate_transformed)
+    std::vector<int> lin;                  // the colour parameters: basis j has colour lin[j] = 1
+    std::array<std::vector<int>, 3> var_of;  // solver variable of colour j in channel c (−1: fixed)
+    std::vector<size_t> shape;             // solver variables that are not colours
+    bool channel_free = false;
+    std::vector<bool> constant;            // basis j does not depend on the shape
+    size_t stride = 0, blocks = 0;         // what bases and tm were built for
+    std::vector<std::vector<double>> keys;  // [q·K + j]: the parameters tr_.bases holds
+    std::vector<std::vector<std::vector<double>>> bases;  // [block][q·K + j][sample]
+    std::vector<std::vector<double>> tm;    // [block][c·n + k] = T(f m_c)
+  } tr_;
 };
 
 // The objective as a Ceres problem of n + 1 residuals instead of the domain's millions: with
@@ -782,9 +1105,22 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
         for (int c = 0; c < 3; ++c)
           if (v.channel < 0 || v.channel == c) pv.values[size_t(c)][size_t(v.param)] = x;
       }
+    problem.set_stride(strides.front());
+    problem.start_colours(pv);  // a transformed residual's colours fitted to the start's shape
     problem.set_base(pv);
     std::vector<double> x(n);
     problem.from_values(pv, x.data());
+    if (start == 0 && options.scan_start && n > 0) {  // start 0: the best point of a scan (fit/start_scan.h)
+      std::vector<int> var_param;
+      for (const Var& v : problem.vars()) var_param.push_back(v.param);
+      problem.set_stride(scan_stride(problem.sample_count()));
+      const StartScan scan = scan_start(table, var_param, x, [&](const std::vector<double>& p) {
+        Objective o;
+        return problem.evaluate(p.data(), false, o) ? o.cost : std::numeric_limits<double>::infinity();
+      });
+      x = scan.x;
+      best.scan_points = scan.points;
+    }
     bool converged = true, usable = true;
     std::string message = "colours only: solved directly";
     for (size_t level = 0; level < strides.size() && n > 0 && usable; ++level) {

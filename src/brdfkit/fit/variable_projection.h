@@ -7,8 +7,9 @@
 // size is ever stored: each evaluation reduces the domain, in parallel chunks summed in a fixed
 // order, to the normal equations of the shape (variable_projection.cpp). Under a metric whose residual is not linear in ρ (low-e2's logarithm) the
 // colours become ordinary solver parameters (seed 003 §5.1 fits every parameter of E2 at once).
-// Seeded multi-start: start 0 from the table's defaults, the others uniform in the bounds
-// (log-uniform where the bounds span more than two decades).
+// Seeded multi-start: start 0 the best point of a scan that includes the table's defaults
+// (FitOptions::scan_start), the others uniform in the bounds (log-uniform where the bounds span
+// more than two decades).
 #include <cstdint>
 #include <string>
 
@@ -26,6 +27,10 @@ struct FitOptions {
   // alone decides the result, so it is the full domain's optimum (DESIGN.md §7), reached in fewer
   // full-domain iterations (DESIGN.md §12).
   bool coarse_to_fine = true;
+  // Start 0 is the best point of a deterministic scan of the shape parameters' box (colours solved
+  // linearly at each point) instead of the table's defaults, which the scan includes
+  // (fit/start_scan.h; issue #5: fits from the defaults stalled in poor minima).
+  bool scan_start = true;
 };
 
 struct FitResult {
@@ -33,6 +38,7 @@ struct FitResult {
   double metric_value = 0;  // the fitting metric at `values` (Metric::value)
   int iterations = 0;       // solver iterations, all starts
   int best_start = 0;
+  int scan_points = 0;      // points the scan of start 0 evaluated (0: start 0 was the defaults)
   double seconds = 0;       // wall time of the fit (domain construction excluded)
   bool converged = false;   // the best start's solver reported convergence
   std::string message;      // the best start's solver report, one line

@@ -106,8 +106,7 @@ double MarginalWarp2D::lookup(const std::vector<double>& table, size_t stride, c
   return v;
 }
 
-double MarginalWarp2D::eval(const Vec2d& pos_in, const double* param) const {
-  const Weights w = weights(param);
+double MarginalWarp2D::eval(const Vec2d& pos_in, const Weights& w) const {
   const size_t n = size_t(nx_) * size_t(ny_);
   const double px = std::clamp(pos_in.x(), 0.0, 1.0) * (nx_ - 1), py = std::clamp(pos_in.y(), 0.0, 1.0) * (ny_ - 1);
   const int ix = std::min(int(px), nx_ - 2), iy = std::min(int(py), ny_ - 2);
@@ -156,9 +155,8 @@ std::pair<Vec2d, double> MarginalWarp2D::sample(Vec2d u, const double* param) co
   return {p, ((1 - sx) * c0 + sx * c1) * (nx_ - 1) * (ny_ - 1)};
 }
 
-std::pair<Vec2d, double> MarginalWarp2D::invert(Vec2d p, const double* param) const {
+std::pair<Vec2d, double> MarginalWarp2D::invert(Vec2d p, const Weights& w) const {
   if (conditional_cdf_.empty()) throw std::logic_error("MarginalWarp2D::invert: not built as a distribution");
-  const Weights w = weights(param);
   const size_t n = size_t(nx_) * size_t(ny_), nxs = size_t(nx_);
   const double px = std::clamp(p.x(), 0.0, 1.0) * (nx_ - 1), py = std::clamp(p.y(), 0.0, 1.0) * (ny_ - 1);
   const int ix = std::min(int(px), nx_ - 2), iy = std::min(int(py), ny_ - 2);

@@ -22,23 +22,29 @@ class MarginalWarp2D {
   // interpolant; with true the data are normalized to a density on [0,1]² and the CDFs built.
   MarginalWarp2D(const float* data, int nx, int ny, std::vector<std::vector<float>> params, bool distribution);
 
-  // Bilinear interpolation at pos ∈ [0,1]² (clamped), parameters interpolated linearly.
-  double eval(const Vec2d& pos, const double* param = nullptr) const;
-  // Unit square → distributed point, with its density (only if built as a distribution).
-  std::pair<Vec2d, double> sample(Vec2d u, const double* param = nullptr) const;
-  // Exact inverse of sample(): point → unit square, with the density at the point.
-  std::pair<Vec2d, double> invert(Vec2d p, const double* param = nullptr) const;
-
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
-
- private:
+  // The slices a parameter value interpolates and their weights. Callers that evaluate many
+  // points at one parameter value (all samples of one θi) compute them once and pass them to the
+  // overloads below, which give the same values as the ones taking `param`.
   struct Weights {
     std::array<size_t, 4> slice{};  // up to 2 params → up to 4 slices
     std::array<double, 4> w{};
     int count = 1;
   };
   Weights weights(const double* param) const;
+
+  // Bilinear interpolation at pos ∈ [0,1]² (clamped), parameters interpolated linearly.
+  double eval(const Vec2d& pos, const double* param = nullptr) const { return eval(pos, weights(param)); }
+  double eval(const Vec2d& pos, const Weights& w) const;
+  // Unit square → distributed point, with its density (only if built as a distribution).
+  std::pair<Vec2d, double> sample(Vec2d u, const double* param = nullptr) const;
+  // Exact inverse of sample(): point → unit square, with the density at the point.
+  std::pair<Vec2d, double> invert(Vec2d p, const double* param = nullptr) const { return invert(p, weights(param)); }
+  std::pair<Vec2d, double> invert(Vec2d p, const Weights& w) const;
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+
+ private:
   double lookup(const std::vector<double>& table, size_t stride, const Weights& w, size_t index) const;
 
   int nx_ = 0, ny_ = 0;

@@ -225,51 +225,82 @@ std::string RglBrdf::dimensions() const {
 std::optional<Rgb> RglBrdf::eval(const Vec3d& wi, const Vec3d& wo) const { return eval_conditioned(wi, wo, true); }
 
 namespace {
+// The part of a look-up that depends on ωc alone: its angles, the interpolation weights of its
+// (φc, θc) between the tables' theta_i nodes, σ(ωc). Computed once for all samples that share ωc.
+struct Conditioning {
+  double params[2];
+  MarginalWarp2D::Weights weights;
+  double sigma;
+};
+
+Conditioning condition_on(const Vec3d& wc, const MarginalWarp2D& vndf, const MarginalWarp2D& sigma) {
+  const double theta_c = elevation(wc), phi_c = std::atan2(wc.y(), wc.x());
+  Conditioning c;
+  c.params[0] = phi_c;
+  c.params[1] = theta_c;
+  c.weights = vndf.weights(c.params);  // every table conditioned on (φc, θc) has vndf's nodes
+  c.sigma = sigma.eval(Vec2d(theta2u(theta_c), phi2u(phi_c)));
+  return c;
+}
+
 // What eval needs of a direction pair: table coordinates and the factor D/(4σ(ωc) cos θ).
 struct Lookup {
   Vec2d sample;
-  double params[2];
   double factor;
 };
 
-// Shared by eval_conditioned, eval_luminance and table_coordinates, so they agree by construction.
-std::optional<Lookup> lookup_pair(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other, bool jacobian,
-                                  const MarginalWarp2D& vndf, const MarginalWarp2D& ndf, const MarginalWarp2D& sigma) {
+// Shared by every evaluation (single pairs and eval_from), so they agree by construction.
+std::optional<Lookup> lookup_pair(const Vec3d& wc, const Conditioning& c, const Vec3d& wx, bool cosine_of_other,
+                                  bool jacobian, const MarginalWarp2D& vndf, const MarginalWarp2D& ndf) {
   if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
   const Vec3d m = (wc + wx).normalized();
-  const double theta_c = elevation(wc), phi_c = std::atan2(wc.y(), wc.x());
   const double theta_m = elevation(m), phi_m = std::atan2(m.y(), m.x());
   // Isotropic: the half vector's azimuth is taken relative to ωc's (Dupuy & Jakob 2018 §6).
-  const Vec2d u_c(theta2u(theta_c), phi2u(phi_c));
-  Vec2d u_m(theta2u(theta_m), phi2u(phi_m - phi_c));
+  Vec2d u_m(theta2u(theta_m), phi2u(phi_m - c.params[0]));
   u_m.y() -= std::floor(u_m.y());
   Lookup r;
-  r.params[0] = phi_c;
-  r.params[1] = theta_c;
-  r.sample = vndf.invert(u_m, r.params).first;
+  r.sample = vndf.invert(u_m, c.weights).first;
   const double cos_theta = cosine_of_other ? wx.z() : wc.z();
   // DESIGN.md §2: ρ = table · D(h) / (4 σ(ωc) cos θx); with jacobian = 0 the table holds ρ·cos θx.
-  r.factor = jacobian ? ndf.eval(u_m) / (4 * sigma.eval(u_c) * cos_theta) : 1 / cos_theta;
+  r.factor = jacobian ? ndf.eval(u_m) / (4 * c.sigma * cos_theta) : 1 / cos_theta;
   return r;
 }
 }  // namespace
 
 std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other) const {
-  const auto l = lookup_pair(wc, wx, cosine_of_other, jacobian_, vndf_, ndf_, sigma_);
+  if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
+  const Conditioning c = condition_on(wc, vndf_, sigma_);
+  const auto l = lookup_pair(wc, c, wx, cosine_of_other, jacobian_, vndf_, ndf_);
   if (!l) return std::nullopt;
   Rgb v;
-  for (int c = 0; c < 3; ++c) v[c] = rgb_[size_t(c)].eval(l->sample, l->params);
+  for (int k = 0; k < 3; ++k) v[k] = rgb_[size_t(k)].eval(l->sample, c.weights);
   return Rgb(v * l->factor);
 }
 
+void RglBrdf::eval_from(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
+  out.assign(wo.size(), std::nullopt);
+  if (!(wi.z() > 0)) return;
+  const Conditioning c = condition_on(wi, vndf_, sigma_);
+  for (size_t k = 0; k < wo.size(); ++k) {
+    const auto l = lookup_pair(wi, c, wo[k], true, jacobian_, vndf_, ndf_);
+    if (!l) continue;
+    Rgb v;
+    for (int ch = 0; ch < 3; ++ch) v[ch] = rgb_[size_t(ch)].eval(l->sample, c.weights);
+    out[k] = Rgb(v * l->factor);
+  }
+}
+
 std::optional<double> RglBrdf::eval_luminance(const Vec3d& wi, const Vec3d& wo) const {
-  const auto l = lookup_pair(wi, wo, true, jacobian_, vndf_, ndf_, sigma_);
+  if (!(wi.z() > 0) || !(wo.z() > 0)) return std::nullopt;
+  const Conditioning c = condition_on(wi, vndf_, sigma_);
+  const auto l = lookup_pair(wi, c, wo, true, jacobian_, vndf_, ndf_);
   if (!l) return std::nullopt;
-  return luminance_.eval(l->sample, l->params) * l->factor;
+  return luminance_.eval(l->sample, c.weights) * l->factor;
 }
 
 std::optional<Vec2d> RglBrdf::table_coordinates(const Vec3d& wc, const Vec3d& wx) const {
-  const auto l = lookup_pair(wc, wx, true, jacobian_, vndf_, ndf_, sigma_);
+  if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
+  const auto l = lookup_pair(wc, condition_on(wc, vndf_, sigma_), wx, true, jacobian_, vndf_, ndf_);
   if (!l) return std::nullopt;
   return l->sample;
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@ class RglBrdf final : public MeasuredBrdf {
   // weights of a slice sum to 2π and Σ weight·ρ·cosθo ≈ that slice's albedo.
   SampleSet samples() const override;
 
+  // out[k] = eval(wi, wo[k]) for every k, the same values by the same operations, with what
+  // depends on wi alone (its angles, its θi interpolation weights, σ(wi)) computed once: the
+  // look-ups of a metric's chunk share wi.
+  void eval_from(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const;
   // ρ with the table conditioned on `wc` and the other direction `wx`. With `cosine_of_other`
   // false the cosine is taken on ωc (pbrt-v4 before PR #215): only for tests that show it wrong.
   std::optional<Rgb> eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other = true) const;

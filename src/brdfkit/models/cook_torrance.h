@@ -9,6 +9,7 @@
 // Parameters, in this order: kd (per channel, linear), ks (per channel, linear), then
 // Ndf::params(), then Fresnel::params(). One evaluation template (`eval_at`) serves doubles,
 // the structure-of-arrays batch loop (`eval_batch`) and ceres::Jet.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -114,6 +115,39 @@ struct CookTorrance {
       const double spec = fresnel.eval(cd) * ndf.D(ch) * masking(ndf, iz, oz, ch, cd) / (4.0 * iz * oz);
       out[k] = above ? kd_pi + ks * spec : 0.0;
     }
+  }
+  // eval_batch at two values a, b of one Fresnel parameter (Model::eval_batch_pair): D, G and the
+  // cosines once, the Fresnel term twice, each product in eval_batch's order so both outputs
+  // equal eval_batch's to the bit. False (nothing written) for a parameter outside the Fresnel term.
+  [[gnu::flatten]] static bool eval_batch_pair(const double* p, int, int param, double a, double b, std::size_t n,
+                                               const double* __restrict wix, const double* __restrict wiy,
+                                               const double* __restrict wiz, const double* __restrict wox,
+                                               const double* __restrict woy, const double* __restrict woz,
+                                               double* __restrict out_a, double* __restrict out_b) {
+    static const int fresnel_count = int(Fresnel<double>::params().size());
+    const int f0 = fresnel_offset();
+    if (param < f0 || param >= f0 + fresnel_count) return false;
+    double fp_a[8], fp_b[8];  // the Fresnel term's parameters (Schlick: 1; conductors: a few)
+    if (fresnel_count > 8) return false;
+    std::copy(p + f0, p + f0 + fresnel_count, fp_a);
+    std::copy(p + f0, p + f0 + fresnel_count, fp_b);
+    fp_a[param - f0] = a;
+    fp_b[param - f0] = b;
+    const Ndf<double> ndf(p + kNdfOffset);
+    const Fresnel<double> fresnel_a(fp_a), fresnel_b(fp_b);
+    const double kd_pi = p[0] * kInvPi, ks = p[1];
+    for (std::size_t k = 0; k < n; ++k) {
+      const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
+      const bool above = (iz > 0.0) & (oz > 0.0);
+      const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
+      const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
+      const double ch = hz / len, cd = 0.5 * len;
+      const double d = ndf.D(ch), g = masking(ndf, iz, oz, ch, cd), den = 4.0 * iz * oz;
+      const double spec_a = fresnel_a.eval(cd) * d * g / den, spec_b = fresnel_b.eval(cd) * d * g / den;
+      out_a[k] = above ? kd_pi + ks * spec_a : 0.0;
+      out_b[k] = above ? kd_pi + ks * spec_b : 0.0;
+    }
+    return true;
   }
   static void eval_batch(const double* p, int c, const SampleSet& s, double* out) {
     eval_batch(p, c, s.size(), s.wi_x.data(), s.wi_y.data(), s.wi_z.data(), s.wo_x.data(), s.wo_y.data(),
