@@ -12,6 +12,7 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/fit/file_digest.h"
 #include "brdfkit/fit/fit_job.h"
+#include "brdfkit/fit/metric_cache.h"
 #include "brdfkit/fit/metric_report.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
@@ -40,6 +41,8 @@ int run_fit(const FitArgs& a) {
   if (a.verbose) opt.progress = [](std::string_view line) { std::cerr << line << std::endl; };
   fit::validate(opt);  // names a bad option before any work
   const auto data = load_measured(a.file);
+  // The fit and the reports share the metric domains they have in common (ngan, its albedo norm).
+  const fit::MetricCache domains(*data);
   fit::FitJobResult r;
   try {
     r = fit::run_fit_job(model, *data, a.file, fit::sha256_file(a.file), opt);

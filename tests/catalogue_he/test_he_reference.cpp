@@ -68,8 +68,8 @@ class HeCal {
     return fresnel2(RdotP) * Exp(-gfun(RdotP, RdotP, K(theta_r))) * sq(shadowf(theta_r));
   }
 
-  // Number of terms the last Dsum call added (to tell where Dsummax bound the sum).
-  mutable int last_terms = 0;
+  // Set when z0root ran out of its 100 iterations (He.cal then uses z0 = 0).
+  mutable bool z0_failed = false;
 
  private:
   static double sq(double x) { return x * x; }
@@ -119,6 +119,7 @@ class HeCal {
       x0 = x1;
       x1 = x1 - z0off(Ki, K_r, x1);
     }
+    z0_failed = true;  // z0root's "i = 0" branch: gives up, z0 = 0, σ = σ0
     return 0;
   }
   double sigma(double ti, double K_r) const {
@@ -142,7 +143,6 @@ class HeCal {
       t = c * Exp(-g - e / (m + 1)) / (m + 1);
       ++m;
     }
-    last_terms = m;
     return sum;
   }
 
@@ -172,14 +172,14 @@ const std::vector<Surface>& surfaces() {
 std::vector<std::pair<Vec3d, Vec3d>> direction_pairs() {
   std::vector<std::pair<Vec3d, Vec3d>> pairs;
   const double deg = kPi / 180;
-  for (double ti : {2.0, 20.0, 40.0, 60.0, 75.0, 85.0}) {
+  for (double ti : {2.0, 20.0, 40.0, 60.0, 75.0, 85.0, 89.0}) {
     const Vec3d wi = spherical_direction(ti * deg, kPi);
-    for (double to : {2.0, 15.0, 35.0, 55.0, 70.0, 84.0}) {
+    for (double to : {2.0, 15.0, 35.0, 55.0, 70.0, 84.0, 88.5}) {
       for (double phi : {0.0, 30.0, 90.0, 150.0, 180.0}) pairs.emplace_back(wi, spherical_direction(to * deg, phi * deg));
     }
     for (double dt : {-3.0, -1.0, -0.2, 0.0, 0.2, 1.0, 3.0}) {
       const double to = ti + dt;
-      if (to < 1.0 || to > 88.0) continue;
+      if (to < 1.0 || to > 89.5) continue;
       for (double phi : {0.0, 0.5, 2.0}) pairs.emplace_back(wi, spherical_direction(to * deg, phi * deg));
     }
   }
@@ -194,7 +194,7 @@ using P = std::array<double, 6>;  // kd, ks, sigma0, tau, eta, k
 TEST(HeReference, DirectionalDiffuseMatchesRadianceHeCal) {
   const auto pairs = direction_pairs();
   double worst = 0;
-  int compared = 0, underflow = 0;
+  int compared = 0, underflow = 0, z0_failures = 0;
   for (const Surface& s : surfaces()) {
     const P p{0.0, 1.0, s.sigma0, s.tau, s.eta, s.k};
     double worst_s = 0;
@@ -202,7 +202,12 @@ TEST(HeReference, DirectionalDiffuseMatchesRadianceHeCal) {
       const HeCal ref(s.sigma0, s.tau, s.eta, s.k, HeTorrance::wavelength_um(c), HeCalConstants::converged());
       for (const auto& [wi, wo] : pairs) {
         const double ours = HeTorrance::directional_diffuse<double>(p.data(), c, wi, wo);
+        ref.z0_failed = false;
         const double theirs = ref.dd(wi, wo);
+        if (ref.z0_failed) {
+          ++z0_failures;
+          continue;
+        }
         if (theirs == 0) {  // Exp(x < −400) = 0 in He.cal: every term below e^{−400}
           ++underflow;
           EXPECT_LT(ours, 1e-150) << s.name;
@@ -218,62 +223,11 @@ TEST(HeReference, DirectionalDiffuseMatchesRadianceHeCal) {
     std::printf("[ he vs He.cal ] %-20s max |ours/He.cal - 1| = %.2e\n", s.name, worst_s);
     worst = std::max(worst, worst_s);
   }
-  std::printf("[ he vs He.cal ] %d values compared (%d both ~0), max relative difference %.2e\n", compared, underflow,
-              worst);
+  std::printf("[ he vs He.cal ] %d values compared (%d both ~0, %d skipped: He.cal's z0 did not converge), max "
+              "relative difference %.2e\n", compared, underflow, z0_failures, worst);
   EXPECT_GT(compared, 3000);
 }
 
 }  // namespace
 }  // namespace brdfkit
 
-namespace brdfkit {
-namespace {
-
-TEST(HeReferenceProbe, Published) {
-  const auto pairs = direction_pairs();
-  for (const Surface& s : surfaces()) {
-    const P p{0.0, 1.0, s.sigma0, s.tau, s.eta, s.k};
-    double worst = 0, wo_val = 0, wt = 0; int terms = 0;
-    for (int c = 0; c < 3; ++c) {
-      const HeCal ref(s.sigma0, s.tau, s.eta, s.k, HeTorrance::wavelength_um(c), HeCalConstants::published());
-      const HeCal full(s.sigma0, s.tau, s.eta, s.k, HeTorrance::wavelength_um(c), HeCalConstants::converged());
-      for (const auto& [wi, wo] : pairs) {
-        const double ours = HeTorrance::directional_diffuse<double>(p.data(), c, wi, wo);
-        const double theirs = ref.dd(wi, wo);
-        const double f = full.dd(wi, wo);
-        if (f == 0) continue;
-        const double rel = std::fabs(theirs / ours - 1);
-        if (rel > worst) { worst = rel; wo_val = ours; wt = theirs; terms = ref.last_terms; }
-        (void)f;
-      }
-    }
-    std::printf("[probe published] %-20s max %.3e (ours %.3e He.cal %.3e terms %d)\n", s.name, worst, wo_val, wt, terms);
-  }
-  for (double sigma0 : {0.3, 0.5, 0.7, 1.0}) {
-    const P p{0.0, 1.0, sigma0, 10.0, 0.96, 6.69};
-    const HeCal ref(sigma0, 10.0, 0.96, 6.69, 0.645, HeCalConstants::published());
-    const HeCal full(sigma0, 10.0, 0.96, 6.69, 0.645, HeCalConstants::converged());
-    for (double t : {0.05, 0.5, 1.0}) {
-      const Vec3d wi = spherical_direction(t, kPi), wo = spherical_direction(t, 0.0);
-      const double ours = HeTorrance::directional_diffuse<double>(p.data(), 0, wi, wo);
-      std::printf("[probe rough] sigma0 %.1f theta %.2f: ours %.6e He.cal %.6e (terms %d) full %.6e\n", sigma0, t, ours, ref.dd(wi, wo), ref.last_terms, full.dd(wi, wo));
-    }
-  }
-  for (const Surface& s : surfaces()) {
-    const P p{0.0, 1.0, s.sigma0, s.tau, s.eta, s.k};
-    double worst = 0;
-    for (int c = 0; c < 3; ++c) {
-      const HeCal ref(s.sigma0, s.tau, s.eta, s.k, HeTorrance::wavelength_um(c), HeCalConstants::converged());
-      const HeCal pub(s.sigma0, s.tau, s.eta, s.k, HeTorrance::wavelength_um(c), HeCalConstants::published());
-      for (double deg = 1; deg < 89.5; deg += 2) {
-        const double ct = std::cos(deg * kPi / 180);
-        const double a = HeTorrance::specular_reflectance(p.data(), c, ct), b = ref.s(ct), b2 = pub.s(ct);
-        worst = std::max(worst, std::fabs(a / b - 1));
-        if (deg == 45) std::printf("[probe spike] %s c%d: %.8e %.8e pub %.8e\n", s.name, c, a, b, b2);
-      }
-    }
-    std::printf("[probe spike] %-20s max %.3e\n", s.name, worst);
-  }
-}
-}
-}

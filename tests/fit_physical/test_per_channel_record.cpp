@@ -42,7 +42,7 @@ TEST(PerChannelRecord, FitThenErrorPrintsTheSameNumbers) {
   const auto fit = run_cli("fit " + data + " --model cook-torrance-beckmann --per-channel-shape --coarsen 3 --report " +
                            metrics + " -o " + saved);
   ASSERT_EQ(fit.exit_code, 0) << fit.err;
-  const auto err = run_cli("error " + data + " --params " + saved);
+  const auto err = run_cli("error " + data + " --params " + saved + " --metric " + metrics);
   ASSERT_EQ(err.exit_code, 0) << err.err;
   std::printf("fit:\n%s%s", block(fit.out, "parameters").c_str(), block(fit.out, "metrics").c_str());
   const std::string printed = block(fit.out, "metrics"), recomputed_lines = block(err.out, "metrics");
@@ -60,7 +60,7 @@ TEST(PerChannelRecord, FitThenErrorPrintsTheSameNumbers) {
     EXPECT_NEAR(doc["params"][size_t(alpha)]["values"][c].get<double>(), 0.15 + 0.05 * c, 1e-6) << c;
 
   // Bit for bit under --json too.
-  const auto ej = run_cli("error " + data + " --params " + saved + " --json");
+  const auto ej = run_cli("error " + data + " --params " + saved + " --metric " + metrics + " --json");
   ASSERT_EQ(ej.exit_code, 0) << ej.err;
   const nlohmann::json recomputed = nlohmann::json::parse(ej.out);
   for (const char* id : {"ngan", "bagher", "low-e1", "low-e2"})

@@ -12,6 +12,7 @@
 #include "brdfkit/ndf/ggx.h"
 #include "brdfkit/shadowing/smith.h"
 #include <cstdlib>
+#include <cstdio>
 
 namespace brdfkit::analysis {
 
@@ -150,7 +151,8 @@ class Estimator {
         static const bool true_g = std::getenv("NDF_TRUE_G") != nullptr;
         static const double alpha_true = 0.2;
         static const Ggx<double> ggx_true(&alpha_true);
-        const double mask = true_g ? smith_g1(ggx_true, s_.ci[k]) * smith_g1(ggx_true, s_.co[k])
+        static const bool true_g0 = std::getenv("NDF_TRUE_G0") != nullptr;
+        const double mask = (true_g || (true_g0 && it == 0)) ? smith_g1(ggx_true, s_.ci[k]) * smith_g1(ggx_true, s_.co[k])
                             : model ? model->masking().g1(s_.ci[k]) * model->masking().g1(s_.co[k]) : 1.0;
         g[k] = s_.a[k] * fresnel[k] * mask / (4 * s_.ci[k] * s_.co[k]);
       }
@@ -180,12 +182,26 @@ class Estimator {
             dphi.col(i) = phis[a] - phis[b];
           }
           const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(phi - xs.back());
-          if (gamma.allFinite()) next = (phi - dphi * gamma).cwiseMax(0.0);
+          static const bool no_anderson = std::getenv("NDF_NOANDERSON") != nullptr;
+          if (gamma.allFinite() && !no_anderson) next = (phi - dphi * gamma).cwiseMax(0.0);
         }
       }
       xs.push_back(next);
       if (xs.size() > size_t(kDepth) + 1) xs.erase(xs.begin()), phis.erase(phis.begin());
       model.emplace(theta_, std::vector<double>(next.data(), next.data() + next.size()));
+      if (std::getenv("NDF_DEBUG")) {
+        static const double al = 0.2;
+        static const Ggx<double> gg(&al);
+        std::printf("it %d G1 rel err:", it);
+        for (double deg : {30., 50., 60., 70., 75., 80., 85., 88.}) {
+          const double c = std::cos(deg * kPi / 180);
+          std::printf(" %.0f:%+.1e", deg, model->masking().g1(c) / smith_g1(gg, c) - 1);
+        }
+        std::printf("\n  D node rel err:");
+        for (size_t j = 0; j < theta_.size(); j += (theta_[j] > 1.2 ? 1 : 8))
+          std::printf(" %.1f:%+.1e", theta_[j] * 180 / kPi, model->distribution().value[j] / gg.D(std::cos(theta_[j])) - 1);
+        std::printf("\n");
+      }
     }
     e.d = st.d;
     e.values.values = {std::vector<double>{st.kd[0], st.ks[0], f0}, std::vector<double>{st.kd[1], st.ks[1], f0},

@@ -19,6 +19,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/file_digest.h"
 #include "brdfkit/fit/metric.h"
+#include "brdfkit/fit/metric_cache.h"
 #include "brdfkit/fit/metric_report.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/models/published_fits.h"
@@ -63,6 +64,7 @@ struct Material {
   bool sha_done = false, loaded = false, published_done = false;
   std::string sha, error;
   std::unique_ptr<MeasuredBrdf> data;
+  std::unique_ptr<MetricCache> cache;  // every fit of the material reuses its domains (metric_cache.h)
   std::map<std::string, std::shared_ptr<const Metric>> metrics;
   std::map<std::string, std::string> undefined;  // metric id → why the data cannot answer it
   std::optional<double> published;
@@ -174,8 +176,9 @@ class Batch {
     {
       std::lock_guard lock(mat.mu);
       if (--mat.remaining == 0) {
-        mat.data.reset();
         mat.metrics.clear();
+        mat.cache.reset();
+        mat.data.reset();
       }
     }
     const size_t done = ++done_;
@@ -218,9 +221,10 @@ class Batch {
       mat.error = e.what();
       throw;
     }
+    mat.cache = std::make_unique<MetricCache>(*mat.data);
     for (const std::string& id : report_) {
       try {
-        mat.metrics[id] = std::make_shared<const Metric>(make_metric(id, *mat.data, MetricOptions{opt_.job.coarsen}));
+        mat.metrics[id] = shared_metric(id, *mat.data, MetricOptions{opt_.job.coarsen});
       } catch (const InputError& e) {  // MetricUndefined and grids a coarsening cannot make
         mat.undefined[id] = e.what();
       }

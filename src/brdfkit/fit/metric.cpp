@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/fit/metric_cache.h"
 #include "brdfkit/fit/metric_definition.h"
 #include "brdfkit/measured/merl_brdf.h"
 
@@ -32,6 +33,7 @@ std::span<const std::string_view> metric_ids() { return kIds; }
 
 Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
   if (opt.coarsen < 1) throw InputError("metric '" + std::string(id) + "'", "coarsening factor must be >= 1");
+  if (auto kept = detail::find_cached_metric(data, id, opt)) return *kept;
   const MetricDefinition def = definition(id, opt.coarsen);
   Metric m;
   m.id_ = std::string(id);
@@ -70,7 +72,14 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
                                         "' is normalized by it and undefined");
   }
   m.scale_ = std::sqrt(scale2) / (def.sqrt ? m.albedo_norm_ : 1.0);
+  detail::keep_metric(data, id, opt, m);
   return m;
+}
+
+std::shared_ptr<const Metric> shared_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
+  Metric m = make_metric(id, data, opt);
+  if (auto kept = detail::find_cached_metric(data, id, opt)) return kept;
+  return std::make_shared<const Metric>(std::move(m));
 }
 
 const MetricChunk& Metric::chunk(size_t i, MetricChunk& scratch) const {
@@ -141,6 +150,7 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
       if (theta <= 80 * deg + 1e-9) best = std::max(best, a.maxCoeff());
     return best;
   }
+  if (auto kept = detail::find_cached_albedo(data, coarsen)) return *kept;
   const int n_i = 80 / coarsen;
   const auto ti = cell_centres(0.0, n_i * coarsen * deg, n_i);
   const auto to = cell_centres(0.0, kPi / 2, 90 / coarsen);
@@ -169,6 +179,7 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
   });
   double out = 0;
   for (double b : best) out = std::max(out, b);
+  detail::keep_albedo(data, coarsen, out);
   return out;
 }
 

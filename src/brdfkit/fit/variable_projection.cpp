@@ -75,6 +75,7 @@ class Problem {
     std::vector<int> lin;
     for (size_t p = 0; p < table_.size(); ++p)
       if (table_[p].linear && table_[p].scope == Scope::PerChannel) lin.push_back(int(p));
+    if (!homogeneous(lin)) lin.clear();  // no linear sub-problem: every parameter a solver variable
     project_ = metric.transform() == Transform::Identity && !lin.empty();
     std::vector<int> paired(table_.size(), -1);  // P → L
     if (project_) pair_affine(lin, paired);
@@ -179,7 +180,6 @@ class Problem {
     }
     ParamValues pv = base_;
     to_values(x, pv);
-    std::fprintf(stderr, "SPEEDDBG stride %zu deriv %d x0 %.17g\n", stride_, int(derivatives), vars_.empty() ? 0.0 : x[0]);
     const bool ok = project_  ? evaluate_projected(x, pv, derivatives, out)
                     : tr_.on  ? evaluate_transformed(x, pv, derivatives, out)
                               : evaluate_plain(pv, derivatives, out);
@@ -947,6 +947,22 @@ class Problem {
       for (int k = 0; k < 12; ++k) {
         const auto [wi, wo] = probe(k);
         if (model_.eval(a.data(), c, wi, wo) != model_.eval(b.data(), c, wi, wo)) return false;
+      }
+    }
+    return true;
+  }
+
+  // Whether ρ vanishes with every linear parameter at 0 (probed): the projection writes ρ as
+  // Σ β_j b_j, which a term free of them breaks. Ashikhmin-Shirley's lobe (colour Rs, a Schlick
+  // F0, no scale) is such a term: fitted as kd (1/π + lobe) it stalled at shape error 0.94.
+  bool homogeneous(const std::vector<int>& lin) const {
+    const ParamValues pv = ParamValues::defaults(table_);
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> p = pv.values[size_t(c)];
+      for (int l : lin) p[size_t(l)] = 0.0;
+      for (int k = 0; k < 12; ++k) {
+        const auto [wi, wo] = probe(k);
+        if (model_.eval(p.data(), c, wi, wo) != 0.0) return false;
       }
     }
     return true;

@@ -18,6 +18,7 @@
 #include "brdfkit/core/warp.h"
 #include "brdfkit/measured/sample_set.h"
 #include "brdfkit/models/param.h"
+#include "brdfkit/ndf/beckmann.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
@@ -32,6 +33,19 @@ enum class Masking {
 // equal when ks/4 = ρs/π.
 inline double ks_from_bagher_rho_s(double rho_s) { return 4.0 * rho_s * kInvPi; }
 inline double bagher_rho_s_from_ks(double ks) { return ks * kPi / 4.0; }
+
+// tanθ below which a distribution's Smith G1 = 1/(1 + Λ) is 1 to the last bit, so the batch loops
+// skip Λ there (its erfc and exp are most of a Beckmann evaluation); 0: never.
+template <template <class> class Ndf> struct SmithUnitBelow {
+  static constexpr bool kKnown = false;  // the batch loops stay as they are (GGX's vectorizes)
+  static double tan_theta(const Ndf<double>&) { return 0.0; }
+};
+// Beckmann: 0 < Λ(a) < exp(−a²)/(2a√π) (DESIGN.md §4, a = 1/(α tanθ)), which for a ≥ 6.5 is below
+// 2⁻⁶⁰, so 1 + Λ rounds to 1 and G1 = 1 exactly: tanθ ≤ 1/(6.5 α).
+template <> struct SmithUnitBelow<Beckmann> {
+  static constexpr bool kKnown = true;
+  static double tan_theta(const Beckmann<double>& d) { return 1.0 / (6.5 * d.alpha); }
+};
 
 template <template <class> class Ndf, template <class> class Fresnel, Masking kMasking = Masking::SmithUncorrelated>
 struct CookTorrance {
@@ -67,6 +81,20 @@ struct CookTorrance {
       const T g = T(2) * ch / cd;
       const T gm = ci < co ? g * ci : g * co;
       return gm < T(1) ? gm : T(1);
+    }
+  }
+
+  // masking() for doubles in the batch loops, equal to it to the bit: G1 = 1 where SmithUnitBelow
+  // says Λ cannot change it (tan_unit: its bound for this distribution).
+  static double batch_masking(const Ndf<double>& ndf, double tan_unit, double ci, double co, double ch, double cd) {
+    if constexpr (kMasking == Masking::SmithUncorrelated && SmithUnitBelow<Ndf>::kKnown) {
+      auto g1 = [&](double c) {
+        const double t = smith_tan_theta<Ndf<double>>(c);
+        return c > 0.0 && t < tan_unit ? 1.0 : smith_g1(ndf, c);
+      };
+      return g1(ci) * g1(co);
+    } else {
+      return masking(ndf, ci, co, ch, cd);
     }
   }
 
@@ -106,13 +134,15 @@ struct CookTorrance {
     const Ndf<double> ndf(p + kNdfOffset);
     const Fresnel<double> fresnel(p + fresnel_offset());
     const double kd_pi = p[0] * kInvPi, ks = p[1];
+    const double tan_unit = SmithUnitBelow<Ndf>::tan_theta(ndf);
     for (std::size_t k = 0; k < n; ++k) {
       const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
       const bool above = (iz > 0.0) & (oz > 0.0);
       const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
       const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
       const double ch = hz / len, cd = 0.5 * len;
-      const double spec = fresnel.eval(cd) * ndf.D(ch) * masking(ndf, iz, oz, ch, cd) / (4.0 * iz * oz);
+      const double spec =
+          fresnel.eval(cd) * ndf.D(ch) * batch_masking(ndf, tan_unit, iz, oz, ch, cd) / (4.0 * iz * oz);
       out[k] = above ? kd_pi + ks * spec : 0.0;
     }
   }
@@ -136,13 +166,14 @@ struct CookTorrance {
     const Ndf<double> ndf(p + kNdfOffset);
     const Fresnel<double> fresnel_a(fp_a), fresnel_b(fp_b);
     const double kd_pi = p[0] * kInvPi, ks = p[1];
+    const double tan_unit = SmithUnitBelow<Ndf>::tan_theta(ndf);
     for (std::size_t k = 0; k < n; ++k) {
       const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
       const bool above = (iz > 0.0) & (oz > 0.0);
       const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
       const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
       const double ch = hz / len, cd = 0.5 * len;
-      const double d = ndf.D(ch), g = masking(ndf, iz, oz, ch, cd), den = 4.0 * iz * oz;
+      const double d = ndf.D(ch), g = batch_masking(ndf, tan_unit, iz, oz, ch, cd), den = 4.0 * iz * oz;
       const double spec_a = fresnel_a.eval(cd) * d * g / den, spec_b = fresnel_b.eval(cd) * d * g / den;
       out_a[k] = above ? kd_pi + ks * spec_a : 0.0;
       out_b[k] = above ? kd_pi + ks * spec_b : 0.0;
