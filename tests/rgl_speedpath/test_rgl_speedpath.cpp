@@ -8,6 +8,7 @@
 #include <random>
 
 #include "brdfkit/fit/metric.h"
+#include "brdfkit/fit/metric_cache.h"
 #include "brdfkit/fit/metric_grid.h"
 #include "brdfkit/measured/rgl_tensor.h"
 #include "brdfkit/models/model.h"
@@ -139,4 +140,34 @@ TEST(RglSpeedpath, MetricValuesPinned) {
     const double v = make_metric(p.metric, *d, MetricOptions{p.coarsen}).value(model, values);
     EXPECT_NEAR(v, p.value, 1e-12 * p.value);
   }
+}
+
+// While a MetricCache lives, make_metric hands out the domain it built first (the same values, one
+// shared object through shared_metric); without one every call builds afresh. Either way the values
+// equal an uncached build's.
+TEST(RglSpeedpath, CacheSharesDomainsOnlyWhileAlive) {
+  BRDFKIT_REQUIRE_DATA("rgl");
+  const RglBrdf b(rgl_file("satin_rosaline_rgb"));
+  const Model& model = model_by_name("cook-torrance-beckmann");
+  const ParamValues values = ibiza_fit(model);
+  const MetricOptions coarse{3};
+  const double ngan = make_metric("ngan", b, coarse).value(model, values);
+  const double bagher = make_metric("bagher", b, coarse).value(model, values);
+  EXPECT_NE(shared_metric("ngan", b, coarse), shared_metric("ngan", b, coarse));  // no cache: two builds
+  {
+    const MetricCache cache(b);
+    const auto first = shared_metric("ngan", b, coarse);
+    EXPECT_EQ(first, shared_metric("ngan", b, coarse));
+    {
+      const MetricCache nested(b);  // a second owner of the same data shares the entry
+      EXPECT_EQ(first, shared_metric("ngan", b, coarse));
+    }
+    EXPECT_EQ(first, shared_metric("ngan", b, coarse));
+    EXPECT_NE(first, shared_metric("ngan", b, MetricOptions{4}));  // other options: another domain
+    EXPECT_EQ(first->value(model, values), ngan);
+    EXPECT_EQ(make_metric("ngan", b, coarse).value(model, values), ngan);
+    EXPECT_EQ(make_metric("bagher", b, coarse).value(model, values), bagher);  // albedo norm from the cache
+    EXPECT_EQ(first->sample_count(), make_metric("ngan", b, coarse).sample_count());
+  }
+  EXPECT_NE(shared_metric("ngan", b, coarse), shared_metric("ngan", b, coarse));
 }

@@ -5,7 +5,7 @@
 // D, and the two steps alternate (the paper starts from a constant masking and needs "about five
 // or less iterations"). Fresnel is Schlick, with F0 given or fitted in an outer 1-D search (the
 // paper's "optimization in the outermost loop"). The masking iterations are Anderson-accelerated
-// (ndf_estimation.cpp): plain alternation converges linearly (≈ 0.55 per iteration on GGX α = 0.2).
+// (ndf_estimation.cpp): plain alternation converges linearly (≈ 0.57 per iteration on GGX α = 0.2).
 //
 // The least squares are those of a metric (fit/metric.h: the `ngan` metric by default), so the
 // estimate minimizes the error that is reported for it. One D is shared by R, G, B (ks and kd

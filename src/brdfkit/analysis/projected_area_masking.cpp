@@ -24,15 +24,11 @@ double azimuthal_clamped_cosine(double a, double b) {
 
 ProjectedAreaMasking::ProjectedAreaMasking(const std::function<double(double)>& d, const std::vector<double>& kinks,
                                            int nodes) {
-  g1_.assign(std::size_t(std::max(nodes, 2)), 1.0);
-  const int n = int(g1_.size());
+  area_.assign(std::size_t(std::max(nodes, 2)), 1.0);
+  const int n = int(area_.size());
   for (int k = 0; k < n; ++k) {
     const double theta = double(k) / (n - 1) * (kPi / 2);
-    const double ct = std::cos(theta), st = std::sin(theta);
-    if (ct <= 1e-9) {
-      g1_[std::size_t(k)] = 0.0;  // G1(π/2) = 0
-      continue;
-    }
+    const double ct = k + 1 == n ? 0.0 : std::cos(theta), st = std::sin(theta);
     // Panels between kinks of D and the angle π/2 − θ where the clamp starts to bite.
     std::vector<double> cuts = {0.0, kPi / 2};
     for (double t : kinks)
@@ -48,18 +44,19 @@ ProjectedAreaMasking::ProjectedAreaMasking(const std::function<double(double)>& 
       };
       sum += boost::math::quadrature::gauss_kronrod<double, 15>::integrate(f, cuts[i], cuts[i + 1], 0);
     }
-    g1_[std::size_t(k)] = 1.0 / std::max(1.0, sum / ct);  // Λ ≥ 0
+    area_[std::size_t(k)] = sum;
   }
 }
 
 double ProjectedAreaMasking::g1(double cos_theta) const {
   if (!(cos_theta > 0)) return 0.0;
   const double theta = std::acos(std::min(1.0, cos_theta));
-  const int n = int(g1_.size());
+  const int n = int(area_.size());
   const double x = theta / (kPi / 2) * (n - 1);
   const int i = std::clamp(int(x), 0, n - 2);
   const double w = x - i;
-  return (1 - w) * g1_[std::size_t(i)] + w * g1_[std::size_t(i + 1)];
+  const double area = (1 - w) * area_[std::size_t(i)] + w * area_[std::size_t(i + 1)];
+  return cos_theta / std::max(cos_theta, area);  // A ≥ cosθ, i.e. Λ ≥ 0 (Heitz 2014 Eq. 2)
 }
 
 double ProjectedAreaMasking::lambda(double cos_theta) const {

@@ -23,7 +23,8 @@ struct FitOptions {
   std::uint64_t seed = 1;
   int max_iterations = 100;  // per start and level
   // Solve first on every 64th / 16th / 4th sample of the domain (while ≥ 30 000 samples remain),
-  // each level starting from the previous one's result, then on the whole domain: the last level
+  // each level starting from the lowest-cost point the previous one evaluated (its result, or a
+  // last step its tolerances discarded), then on the whole domain: the last level
   // alone decides the result, so it is the full domain's optimum (DESIGN.md §7), reached in fewer
   // full-domain iterations (DESIGN.md §12).
   bool coarse_to_fine = true;

@@ -106,12 +106,16 @@ double MarginalWarp2D::lookup(const std::vector<double>& table, size_t stride, c
   return v;
 }
 
-double MarginalWarp2D::eval(const Vec2d& pos_in, const Weights& w) const {
-  const size_t n = size_t(nx_) * size_t(ny_);
+MarginalWarp2D::Patch MarginalWarp2D::locate(const Vec2d& pos_in) const {
   const double px = std::clamp(pos_in.x(), 0.0, 1.0) * (nx_ - 1), py = std::clamp(pos_in.y(), 0.0, 1.0) * (ny_ - 1);
   const int ix = std::min(int(px), nx_ - 2), iy = std::min(int(py), ny_ - 2);
-  const double fx = px - ix, fy = py - iy;
-  const size_t i = size_t(iy) * size_t(nx_) + size_t(ix);
+  return {size_t(iy) * size_t(nx_) + size_t(ix), px - ix, py - iy};
+}
+
+double MarginalWarp2D::eval(const Patch& p, const Weights& w) const {
+  const size_t n = size_t(nx_) * size_t(ny_);
+  const size_t i = p.index;
+  const double fx = p.fx, fy = p.fy;
   const double v00 = lookup(data_, n, w, i), v10 = lookup(data_, n, w, i + 1);
   const double v01 = lookup(data_, n, w, i + size_t(nx_)), v11 = lookup(data_, n, w, i + size_t(nx_) + 1);
   const double v = (1 - fy) * ((1 - fx) * v00 + fx * v10) + fy * ((1 - fx) * v01 + fx * v11);

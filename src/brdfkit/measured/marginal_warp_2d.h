@@ -32,9 +32,18 @@ class MarginalWarp2D {
   };
   Weights weights(const double* param) const;
 
+  // Where a point falls in the grid: its patch and the fractions within it. Tables of the same
+  // resolution share it (RGL's three colour tables).
+  struct Patch {
+    size_t index;  // the patch's lower-left node
+    double fx, fy;
+  };
+  Patch locate(const Vec2d& pos) const;
+
   // Bilinear interpolation at pos ∈ [0,1]² (clamped), parameters interpolated linearly.
-  double eval(const Vec2d& pos, const double* param = nullptr) const { return eval(pos, weights(param)); }
-  double eval(const Vec2d& pos, const Weights& w) const;
+  double eval(const Vec2d& pos, const double* param = nullptr) const { return eval(locate(pos), weights(param)); }
+  double eval(const Vec2d& pos, const Weights& w) const { return eval(locate(pos), w); }
+  double eval(const Patch& p, const Weights& w) const;
   // Unit square → distributed point, with its density (only if built as a distribution).
   std::pair<Vec2d, double> sample(Vec2d u, const double* param = nullptr) const;
   // Exact inverse of sample(): point → unit square, with the density at the point.

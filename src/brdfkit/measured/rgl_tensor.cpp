@@ -284,8 +284,9 @@ void RglBrdf::eval_from(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<
   for (size_t k = 0; k < wo.size(); ++k) {
     const auto l = lookup_pair(wi, c, wo[k], true, jacobian_, vndf_, ndf_);
     if (!l) continue;
+    const MarginalWarp2D::Patch patch = rgb_[0].locate(l->sample);  // the colour tables share their grid
     Rgb v;
-    for (int ch = 0; ch < 3; ++ch) v[ch] = rgb_[size_t(ch)].eval(l->sample, c.weights);
+    for (int ch = 0; ch < 3; ++ch) v[ch] = rgb_[size_t(ch)].eval(patch, c.weights);
     out[k] = Rgb(v * l->factor);
   }
 }

@@ -16,7 +16,9 @@
 //      variant does, is not dimensionally consistent: τ² v_xy² must be unit-less.) With this
 //      reading the rough limit g ≫ 1 is exactly Cook-Torrance with a Beckmann distribution of
 //      α = 2σ/τ and Fresnel F, and the smooth limit conserves energy with the spike; both are
-//      tested (tests/catalogue_he).
+//      tested (tests/catalogue_he), and the whole directional-diffuse term and spike agree with
+//      an in-test transcription of Radiance's He.cal (NREL/Radiance lib/He.cal, its series summed
+//      out) to 6.8e-7 relative (tests/catalogue_he/test_he_reference.cpp).
 // kd is He's uniform-diffuse term a(λ) as an albedo (Lambertian, DESIGN.md §6). ks scales the
 // directional-diffuse term: 1 is He's physical model; seed 002 §3.1 fits a free colour scale.
 //

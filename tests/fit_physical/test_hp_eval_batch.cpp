@@ -1,0 +1,50 @@
+// HolzschuchPacanowski::eval_batch builds the exponential-power distribution (a long-double
+// Γ(1/p)) once per batch instead of once per pair — 15.2 s → 2.7 s user for one recovery fit
+// (perf: 65 % of the time was in Boost's tgamma) — and must give eval's values to the bit, since
+// tables are tabulated through eval and fitted through eval_batch.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "brdfkit/core/warp.h"
+#include "brdfkit/models/holzschuch_pacanowski.h"
+
+namespace brdfkit {
+namespace {
+
+TEST(HpEvalBatch, EqualsEvalToTheBit) {
+  const Model& m = model_by_name("holzschuch-pacanowski");
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const size_t n = 500;
+  std::vector<double> v[6];
+  for (auto& a : v) a.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    // Some pairs below the horizon (value 0) among the upper-hemisphere ones.
+    const Vec3d wi = spherical_direction(1.7 * u(rng), 2 * kPi * u(rng));
+    const Vec3d wo = spherical_direction(1.6 * u(rng), 2 * kPi * u(rng));
+    for (int a = 0; a < 3; ++a) {
+      v[a][k] = wi[a];
+      v[3 + a][k] = wo[a];
+    }
+  }
+  const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
+  int compared = 0;
+  for (const double p_shape : {0.15, 0.6, 1.0, 3.0}) {
+    ParamValues values = ParamValues::defaults(m.params());
+    values.set(m.params(), "p", p_shape);
+    values.set(m.params(), "sigma", 0.2 * p_shape);
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> out(n);
+      m.eval_batch(values.channel(c), c, n, d, out.data());
+      for (size_t k = 0; k < n; ++k, ++compared)
+        ASSERT_EQ(out[k], m.eval(values.channel(c), c, Vec3d(v[0][k], v[1][k], v[2][k]), Vec3d(v[3][k], v[4][k], v[5][k])))
+            << "p " << p_shape << " channel " << c << " pair " << k;
+    }
+  }
+  EXPECT_EQ(compared, 4 * 3 * 500);
+}
+
+}  // namespace
+}  // namespace brdfkit
