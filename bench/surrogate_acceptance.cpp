@@ -7,7 +7,7 @@
 // A plain program (no Google Benchmark timing): prints the table (per material: both E2 values,
 // the fit's wall and CPU seconds, the bagher recovery errors and CPU seconds, the tabulation's CPU
 // seconds), the two shapes, and exits 1 if a row fails.
-//   surrogate_acceptance [--starts N] [--coarsen K] [material …]
+//   surrogate_acceptance [--starts N] [--coarsen K] [--bagher-starts N] [material …]
 // One start is the default: start 0 is already the best point of a shape scan (fit/start_scan.h)
 // with colours from the linearized solve; on alum-bronze 3 more random starts found the same E2
 // (0.0138318) for 145.5 s CPU instead of 9.3 s.
@@ -69,12 +69,13 @@ merl::Table tabulate_by_channel(const Brdf& brdf) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int starts = 1, coarsen = 1;
+  int starts = 1, coarsen = 1, bagher_starts = 8;
   std::vector<std::string> materials;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--starts" && i + 1 < argc) starts = std::atoi(argv[++i]);
     else if (a == "--coarsen" && i + 1 < argc) coarsen = std::atoi(argv[++i]);
+    else if (a == "--bagher-starts" && i + 1 < argc) bagher_starts = std::atoi(argv[++i]);
     else materials.push_back(a);
   }
   if (materials.empty()) materials = kDefaultMaterials;
@@ -108,9 +109,14 @@ int main(int argc, char** argv) {
       const double c2 = cpu_seconds();
       const bool e2_ok = lr.fit.metric_value <= e2_published;
       // 2. The bagher procedure recovers the surrogate's parameters (max relative error over
-      // channels; F1 relative to max(|F1|, |F0|)).
+      // channels; F0 and F1 relative to max(|F0|, |F1|): they enter F = F0 + (1 − F0)(1 − cosθd)⁵ −
+      // F1 cosθd together, and a published F0 may be ~0, e.g. chrome's blue 3.2e-13 next to F1 = −1,
+      // where 1e-16 of round-off is a relative error of 4e-4).
       fit::ProcedureOptions bopt;
       bopt.coarsen = 8;  // the reported bagher metric only
+      // From one start the θd = 0 slice fit of cherry-235's red channel (p 0.036) ended at
+      // p ≈ 1.9, α ≈ 0.16, and white-paint's wide blue lobe (α 0.54) was off by 24 %.
+      bopt.starts = bagher_starts;
       const fit::ProcedureResult br = fit::run_procedure("bagher", truth.model(), data, bopt);
       std::array<double, 6> err{};
       const char* names[] = {"kd", "ks", "alpha", "p", "F0", "F1"};
@@ -119,7 +125,9 @@ int main(int argc, char** argv) {
           const double x = param(truth.model(), truth.values(), names[k], c);
           const double y = param(truth.model(), br.fit.values, names[k], c);
           const double ref =
-              k == 5 ? std::max(std::abs(x), std::abs(param(truth.model(), truth.values(), "F0", c))) : std::abs(x);
+              k >= 4 ? std::max(std::abs(param(truth.model(), truth.values(), "F0", c)),
+                                std::abs(param(truth.model(), truth.values(), "F1", c)))
+                     : std::abs(x);
           err[k] = std::max(err[k], std::abs(y - x) / ref);
         }
       bool rec_ok = true;

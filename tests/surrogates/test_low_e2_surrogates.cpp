@@ -68,15 +68,17 @@ TEST(LowE2, RecoversLowSmoothFromItsMerlTable) {
 }
 
 // Issue #5: E2(brdfkit's low-e2 fit) ≤ E2(Löw's published smooth fit) on SGD surrogates. The
-// materials: the one whose published smooth fit is farthest from its surrogate's optimum, and
-// two whose E2 the fit improves least (bench/surrogate_acceptance.cpp's table).
+// materials, from bench/surrogate_acceptance.cpp's full-size table: the two whose E2 the fit
+// improves least (pearl-paint 0.91×, chrome 0.73× the published E2; chrome is also the sharpest
+// lobe), and the one whose published fit is farthest from its surrogate's optimum (white-paint
+// 0.090×).
 TEST(LowE2, FitOfSgdSurrogateReachesThePublishedSmoothE2) {
   BRDFKIT_REQUIRE_DATA("published-fits");
   const auto dir = test::data_dir() / "published-fits";
   const PublishedFits sgd = PublishedFits::read(dir / "bagher2012-sgd.json");
   const PublishedFits smooth = PublishedFits::read(dir / "low2012-smooth-E2.json");
   const Model& low = model_by_name("low-smooth");
-  for (const char* material : {"alum-bronze", "white-paint", "red-fabric"}) {
+  for (const char* material : {"pearl-paint", "chrome", "white-paint"}) {
     SCOPED_TRACE(material);
     const MerlBrdf data(sparse_table(sgd.brdf(material), kCoarsen), material);
     const Metric e2 = make_metric("low-e2", data, {kCoarsen});

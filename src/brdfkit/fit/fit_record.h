@@ -38,7 +38,8 @@ struct FitRecord {
   // The lobe shape was fitted per channel (`--per-channel-shape`, the bagher procedure): the
   // model's Shared parameters hold one value per channel. to_json also sets it whenever a Shared
   // parameter's values differ, and writes it as "shape": "per-channel" (with every parameter's
-  // "scope" per-channel); a record without that field is read as one shared shape.
+  // "scope" per-channel). Reading: "shape", else (files written before it) fit.per_channel_shape,
+  // else one shared shape.
   bool per_channel_shape = false;
   std::vector<MetricReport> metrics;
 };

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <cstdlib>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/box_least_squares.h"
@@ -1181,7 +1180,7 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
       } else if (usable && !problem.best_point().empty()) {
         // Ceres evaluates a step before its parameter tolerance discards it: the next level starts
         // from the lowest cost this one saw (on exact data one level sooner at the optimum).
-        if (std::getenv("SPEED_NO_BEST") == nullptr) x = problem.best_point();
+        x = problem.best_point();
       }
     }
     if (!usable) continue;
