@@ -56,6 +56,7 @@ FitJobResult run_fit_job(const Model& model, const MeasuredBrdf& data, const std
   rec.converged = pr.fit.converged;
   rec.message = pr.fit.message;
   rec.coarsen = opt.coarsen;
+  rec.per_channel_shape = opt.per_channel_shape;  // also when the channels' shapes happen to coincide
   for (const auto& channel : rec.values.values)
     for (double x : channel)
       if (!std::isfinite(x)) throw FitError("the fit produced a non-finite parameter value");

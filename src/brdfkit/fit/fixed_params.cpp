@@ -34,6 +34,10 @@ double FixedParams::eval(const double* p, int c, const Vec3d& wi, const Vec3d& w
   return with_full(p, c, [&](const double* full) { return inner_.eval(full, c, wi, wo); });
 }
 
+void FixedParams::eval_batch(const double* p, int c, std::size_t n, const SoaPairs& d, double* out) const {
+  with_full(p, c, [&](const double* full) { inner_.eval_batch(full, c, n, d, out); });
+}
+
 std::optional<Vec3d> FixedParams::sample(const double* p, int c, const Vec3d& wo, const Vec2d& u,
                                          double u_lobe) const {
   return with_full(p, c, [&](const double* full) { return inner_.sample(full, c, wo, u, u_lobe); });

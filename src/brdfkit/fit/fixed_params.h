@@ -17,6 +17,8 @@ class FixedParams final : public Model {
   const ParamTable& params() const override { return table_; }
   bool reciprocal() const override { return inner_.reciprocal(); }
   double eval(const double* p, int c, const Vec3d& wi, const Vec3d& wo) const override;
+  // Passed through so the inner model's batch path (e.g. HP's once-per-batch Γ(1/p)) serves hp-2step.
+  void eval_batch(const double* p, int c, std::size_t n, const SoaPairs& d, double* out) const override;
   std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override;
   double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi) const override;
 
