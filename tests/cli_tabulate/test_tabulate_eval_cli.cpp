@@ -4,6 +4,7 @@
 // is a one-line message with exit code 2 and no file written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -183,8 +184,9 @@ TEST(SumCli, ModelsCheckAndFit) {
   const double a1 = fitted.values().values[0][size_t(find_param(fitted.model().params(), "1.alpha"))];
   const double a2 = fitted.values().values[0][size_t(find_param(fitted.model().params(), "2.alpha"))];
   std::printf("CLI fit of a tabulated two-lobe Cook-Torrance: 1.alpha %.5g (true 0.3), 2.alpha %.5g (true 0.05)\n", a1, a2);
-  EXPECT_NEAR(a1, 0.3, 0.03);
-  EXPECT_NEAR(a2, 0.05, 0.005);
+  // The lobes are interchangeable (same model, one kd): the fit may return them in either order.
+  EXPECT_NEAR(std::max(a1, a2), 0.3, 0.03);
+  EXPECT_NEAR(std::min(a1, a2), 0.05, 0.005);
   fs::remove_all(dir);
 }
 

@@ -26,14 +26,7 @@ namespace {
 using test::tabulate_cells;
 using test::with;
 
-struct Case {
-  const char* model;
-  std::vector<std::pair<const char*, Rgb>> truth;
-  // Cells read: every k-th in each index. Models whose G1 comes from a numeric Λ table (or, for
-  // Bagher's SGD, a fitted G1 per shape) cost more per evaluation and read fewer cells, so the
-  // executable stays within the CI budget; the optimum is exact at any k.
-  int coarsen = 3;
-};
+using Case = test::RecoveryCase;
 
 const Rgb kKd(0.12, 0.08, 0.05), kKs(0.9, 0.7, 0.6), kF0(0.05, 0.04, 0.08);
 

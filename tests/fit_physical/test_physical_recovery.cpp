@@ -40,11 +40,7 @@ namespace {
 using test::tabulate_cells;
 using test::with;
 
-struct Case {
-  const char* model;
-  std::vector<std::pair<const char*, Rgb>> truth;
-  int coarsen = 3;  // tabulate_cells k: the table holds 1/k³ of the cells
-};
+using Case = test::RecoveryCase;
 
 const Rgb kKd(0.12, 0.08, 0.05);
 
