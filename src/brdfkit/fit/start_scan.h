@@ -1,10 +1,10 @@
 #pragma once
-// How start 0 of a fit is chosen (issue #5). From the table's defaults alone, local solvers stalled
-// in poor minima on real data (krylon_blue under ngan: ward 0.323 and blinn-phong 0.420 while
-// ward-duer, which differs from ward only by cosθi cosθo vs its square root, reached 0.147) and on
-// exact synthetic data (ashikhmin-shirley: shape error 0.94). So start 0 is the best point of a
-// deterministic scan of the solver's box, evaluated with the colours solved linearly (variable
-// projection), which makes each point one pass over a subsample of the domain:
+// How start 0 of a fit is chosen (issue #5). From the table's defaults alone a local solver can end
+// in a poorer basin than a scan finds (Cornell, ngan, defaults → scanned: he on acryl_blue 0.2007 →
+// 0.1701, ashikhmin-shirley-dielectric 0.3386 → 0.2833, ward on garnet_red 0.3732 → 0.3663). So
+// start 0 is the best point of a deterministic scan of the solver's box, evaluated with the
+// colours solved linearly (variable projection), which makes each point one pass over a
+// subsample of the domain:
 //   - every fitted parameter gets a 1-D grid of cell centres inside its bounds (never on them),
 //     log-spaced where the bounds span ≥ kLogSpan (widths, exponents, sharpness: their effect is
 //     multiplicative) and linear otherwise (shapes like SGD's p, Lafortune's C, Fresnel F0);

@@ -30,7 +30,7 @@ struct FitOptions {
   bool coarse_to_fine = true;
   // Start 0 is the best point of a deterministic scan of the shape parameters' box (colours solved
   // linearly at each point) instead of the table's defaults, which the scan includes
-  // (fit/start_scan.h; issue #5: fits from the defaults stalled in poor minima).
+  // (fit/start_scan.h; issue #5: from the defaults some fits end in poorer basins).
   bool scan_start = true;
 };
 
