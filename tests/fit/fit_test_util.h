@@ -39,6 +39,18 @@ inline ParamValues make_values(const Model& m, std::initializer_list<std::pair<c
   return v;
 }
 
+// Holzschuch-Pacanowski with a visible diffraction lobe (σ = 0.05, p = 0.6, a = 1): the material
+// of the hp-2step tests.
+inline ParamValues hp_diffraction_material(const Model& m) {
+  return make_values(m, {{"kd", Rgb(0.05, 0.04, 0.03)},
+                         {"ks", Rgb(0.6, 0.5, 0.4)},
+                         {"kw", Rgb(0.02, 0.01, 0.005)},
+                         {"sigma", Rgb::Constant(0.05)},
+                         {"p", Rgb::Constant(0.6)},
+                         {"a", Rgb::Constant(1.0)},
+                         {"F0", Rgb(0.05, 0.05, 0.05)}});
+}
+
 // A MERL table of the model, with a fraction of the cells marked "not measured" and
 // multiplicative Gaussian noise of relative size `noise`, both seeded.
 inline merl::Table tabulate_model(const Model& m, const ParamValues& v, double missing = 0, double noise = 0,

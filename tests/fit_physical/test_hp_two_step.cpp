@@ -31,16 +31,6 @@
 namespace brdfkit::fit {
 namespace {
 
-ParamValues material(const Model& m) {
-  return test::make_values(m, {{"kd", Rgb(0.05, 0.04, 0.03)},
-                               {"ks", Rgb(0.6, 0.5, 0.4)},
-                               {"kw", Rgb(0.02, 0.01, 0.005)},
-                               {"sigma", Rgb::Constant(0.05)},
-                               {"p", Rgb::Constant(0.6)},
-                               {"a", Rgb::Constant(1.0)},
-                               {"F0", Rgb(0.05, 0.05, 0.05)}});
-}
-
 double param(const Model& m, const ParamValues& v, const char* name) {
   return v.values[0][size_t(find_param(m.params(), name))];
 }
@@ -49,7 +39,7 @@ double relative(double got, double want) { return std::abs(got - want) / std::ab
 
 TEST(HpTwoStep, ClassifiedCellsHoldNoReflectionLobe) {
   const Model& m = model_by_name("holzschuch-pacanowski");
-  const ParamValues want = material(m);
+  const ParamValues want = test::hp_diffraction_material(m);
   const test::AnalyticMeasured data(m, want);
   const analysis::DiffractionMap map = analysis::diffraction_map(data);
   ParamValues no_reflection = want, no_diffraction = want;
@@ -83,7 +73,7 @@ TEST(HpTwoStep, ClassifiedCellsHoldNoReflectionLobe) {
 
 TEST(HpTwoStep, RecoversTheReflectionLobeWhereTheGridResolvesIt) {
   const Model& m = model_by_name("holzschuch-pacanowski");
-  const ParamValues want = material(m);
+  const ParamValues want = test::hp_diffraction_material(m);
   const test::AnalyticMeasured data(m, want);
   ProcedureOptions opt;
   opt.coarsen = 4;
@@ -110,7 +100,7 @@ TEST(HpTwoStep, RecoversTheReflectionLobeWhereTheGridResolvesIt) {
 // (no start scan) σ runs to its lower bound, at a higher low-e1 than the procedure's result.
 TEST(HpTwoStep, SigmaAtItsBoundWasALocalMinimumOnTheCoarseGrid) {
   const Model& m = model_by_name("holzschuch-pacanowski");
-  const ParamValues want = material(m);
+  const ParamValues want = test::hp_diffraction_material(m);
   const test::AnalyticMeasured data(m, want);
   ProcedureOptions opt;
   opt.coarsen = 8;

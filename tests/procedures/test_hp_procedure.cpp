@@ -48,13 +48,7 @@ TEST(HpProcedure, TwoStepNeedsADiffractionLobe) {
 
 TEST(HpProcedure, TwoStepOnAMaterialWithDiffraction) {
   const Model& m = model_by_name("holzschuch-pacanowski");
-  const ParamValues want = test::make_values(m, {{"kd", Rgb(0.05, 0.04, 0.03)},
-                                                 {"ks", Rgb(0.6, 0.5, 0.4)},
-                                                 {"kw", Rgb(0.02, 0.01, 0.005)},
-                                                 {"sigma", Rgb::Constant(0.05)},
-                                                 {"p", Rgb::Constant(0.6)},
-                                                 {"a", Rgb::Constant(1.0)},
-                                                 {"F0", Rgb(0.05, 0.05, 0.05)}});
+  const ParamValues want = test::hp_diffraction_material(m);
   const test::AnalyticMeasured data(m, want);
   // The HP model's evaluation is costly (a Γ per call): a coarse grid, and hp-1step's ten
   // restarts are left to the GGX test of test_procedures.cpp.

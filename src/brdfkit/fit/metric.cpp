@@ -77,8 +77,9 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
 }
 
 std::shared_ptr<const Metric> shared_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
-  Metric m = make_metric(id, data, opt);
   if (auto kept = detail::find_cached_metric(data, id, opt)) return kept;
+  Metric m = make_metric(id, data, opt);
+  if (auto kept = detail::find_cached_metric(data, id, opt)) return kept;  // kept by make_metric
   return std::make_shared<const Metric>(std::move(m));
 }
 
@@ -155,26 +156,24 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
   const auto ti = cell_centres(0.0, n_i * coarsen * deg, n_i);
   const auto to = cell_centres(0.0, kPi / 2, 90 / coarsen);
   const auto ph = cell_centres(0.0, kPi, 180 / coarsen, 2.0);  // Δφ ∈ [π, 2π) mirrors [0, π)
+  // The outgoing directions and their weights cosθo dωo are the same for every θi.
+  std::vector<Vec3d> wo;
+  std::vector<double> w;
+  for (const AxisNode& o : to) {
+    const double st = std::sin(o.angle), ct = std::cos(o.angle);
+    for (const AxisNode& p : ph) {
+      wo.emplace_back(st * std::cos(p.angle), st * std::sin(p.angle), ct);
+      w.push_back(ct * st * o.weight * p.weight);
+    }
+  }
   std::vector<double> best(ti.size(), 0.0);
   tbb::parallel_for(size_t(0), ti.size(), [&](size_t i) {
     const Vec3d wi(std::sin(ti[i].angle), 0.0, std::cos(ti[i].angle));
-    std::vector<Vec3d> wo;
-    wo.reserve(to.size() * ph.size());
-    for (const AxisNode& o : to) {
-      const double st = std::sin(o.angle), ct = std::cos(o.angle);
-      for (const AxisNode& p : ph) wo.emplace_back(st * std::cos(p.angle), st * std::sin(p.angle), ct);
-    }
     std::vector<std::optional<Rgb>> m;
     lookup_row(data, wi, wo, m);
     Rgb a = Rgb::Zero();
-    size_t k = 0;
-    for (const AxisNode& o : to) {
-      const double st = std::sin(o.angle), ct = std::cos(o.angle);
-      for (const AxisNode& p : ph) {
-        const auto& v = m[k++];
-        if (v && v->allFinite()) a += *v * (ct * st * o.weight * p.weight);  // ρ cosθo dωo
-      }
-    }
+    for (size_t k = 0; k < wo.size(); ++k)
+      if (m[k] && m[k]->allFinite()) a += *m[k] * w[k];  // ρ cosθo dωo
     best[i] = a.maxCoeff();
   });
   double out = 0;

@@ -97,5 +97,10 @@ inline double apply_transform(Transform t, double x) {
   if (t == Transform::Identity) return x;
   return std::log1p(x > -1.0 + 1e-12 ? x : -1.0 + 1e-12);
 }
+// T′(x): 1, or 1/(1 + x) — 0 where apply_transform clamps.
+inline double transform_slope(Transform t, double x) {
+  if (t == Transform::Identity) return 1.0;
+  return x > -1.0 + 1e-12 ? 1.0 / (1.0 + x) : 0.0;
+}
 
 }  // namespace brdfkit::fit

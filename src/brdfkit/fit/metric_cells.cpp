@@ -70,18 +70,6 @@ class CellDirections {
   std::vector<Vec3d> d_;
 };
 
-void push(MetricChunk& ch, const Vec3d& wi, const Vec3d& wo, double weight, double factor, const Rgb& m) {
-  ch.wi_x.push_back(wi.x());
-  ch.wi_y.push_back(wi.y());
-  ch.wi_z.push_back(wi.z());
-  ch.wo_x.push_back(wo.x());
-  ch.wo_y.push_back(wo.y());
-  ch.wo_z.push_back(wo.z());
-  ch.sqrt_weight.push_back(std::sqrt(weight));
-  ch.factor.push_back(factor);
-  for (int c = 0; c < 3; ++c) ch.measured[size_t(c)].push_back(m[c]);
-}
-
 }  // namespace
 
 CellDomain build_cell_domain(const merl::Table& table, const CellWeighting& weighting, int coarsen) {
@@ -116,10 +104,10 @@ CellDomain build_cell_domain(const merl::Table& table, const CellWeighting& weig
         const Rgb m = table.value(off);
         const double fi = weighting.cos_i_factor ? wi.z() : 1.0, fo = weighting.cos_i_factor ? wo.z() : 1.0;
         if (weighting.fold) {
-          push(ch, wi, wo, 0.5 * w * (mu_io * fi * fi + mu_oi * fo * fo), 1.0, m);
+          ch.push(wi, wo, 0.5 * w * (mu_io * fi * fi + mu_oi * fo * fo), 1.0, m);
         } else {
-          if (mu_io > 0) push(ch, wi, wo, 0.5 * w * mu_io, fi, m);
-          if (mu_oi > 0) push(ch, wo, wi, 0.5 * w * mu_oi, fo, m);
+          if (mu_io > 0) ch.push(wi, wo, 0.5 * w * mu_io, fi, m);
+          if (mu_oi > 0) ch.push(wo, wi, 0.5 * w * mu_oi, fo, m);
         }
       }
     measure[i] = sum;

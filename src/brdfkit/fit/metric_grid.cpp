@@ -86,15 +86,7 @@ MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data
   const double factor = grid.cos_i_factor ? wi.z() : 1.0;
   for (size_t k = 0; k < wo.size(); ++k) {
     if (!m[k] || !m[k]->allFinite()) continue;
-    ch.wi_x.push_back(wi.x());
-    ch.wi_y.push_back(wi.y());
-    ch.wi_z.push_back(wi.z());
-    ch.wo_x.push_back(wo[k].x());
-    ch.wo_y.push_back(wo[k].y());
-    ch.wo_z.push_back(wo[k].z());
-    ch.sqrt_weight.push_back(std::sqrt(weight[k]));
-    ch.factor.push_back(factor);
-    for (int c = 0; c < 3; ++c) ch.measured[size_t(c)].push_back((*m[k])[c]);
+    ch.push(wi, wo[k], weight[k], factor, *m[k]);
   }
   return ch;
 }

@@ -3,6 +3,7 @@
 // weights (every metric of DESIGN.md §7 is one), cut into one chunk per θi node. A chunk is kept
 // in structure-of-arrays form with the measured value looked up once, invalid cells dropped.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -30,6 +31,18 @@ struct MetricChunk {
   std::vector<double> factor;       // multiplies ρ (model and measured) before the transform
   std::array<std::vector<double>, 3> measured;
   size_t size() const { return sqrt_weight.size(); }
+  // Appends one sample of quadrature weight `weight` (its square root is kept).
+  void push(const Vec3d& wi, const Vec3d& wo, double weight, double f, const Rgb& m) {
+    wi_x.push_back(wi.x());
+    wi_y.push_back(wi.y());
+    wi_z.push_back(wi.z());
+    wo_x.push_back(wo.x());
+    wo_y.push_back(wo.y());
+    wo_z.push_back(wo.z());
+    sqrt_weight.push_back(std::sqrt(weight));
+    factor.push_back(f);
+    for (int c = 0; c < 3; ++c) measured[size_t(c)].push_back(m[c]);
+  }
 };
 
 // Midpoint nodes of n equal cells over [lo, hi] (cell centres), each weighted by `scale` × width.

@@ -58,15 +58,7 @@ SampleDomain build_sample_domain(const SampleSet& s, double (*density)(const Vec
     d.measure_sum += w;
     if (d.chunks.empty() || d.chunks.back().size() == kChunkSize) d.chunks.emplace_back();
     MetricChunk& ch = d.chunks.back();
-    ch.wi_x.push_back(wi.x());
-    ch.wi_y.push_back(wi.y());
-    ch.wi_z.push_back(wi.z());
-    ch.wo_x.push_back(wo.x());
-    ch.wo_y.push_back(wo.y());
-    ch.wo_z.push_back(wo.z());
-    ch.sqrt_weight.push_back(std::sqrt(w * mu));
-    ch.factor.push_back(cos_i_factor ? wi.z() : 1.0);
-    for (int c = 0; c < 3; ++c) ch.measured[size_t(c)].push_back(s.rgb[size_t(c)][k]);
+    ch.push(wi, wo, w * mu, cos_i_factor ? wi.z() : 1.0, s.value(k));
   }
   return d;
 }

@@ -638,14 +638,8 @@ class Problem {
     tr_.channel_free = true;
     for (size_t v : tr_.shape) tr_.channel_free = tr_.channel_free && vars_[v].channel < 0;
     const ParamValues pv = ParamValues::defaults(table_);
-    for (size_t j = 0; j < lin.size() && tr_.channel_free; ++j) {
-      const std::vector<double> p = tr_params(pv, 0, j);
-      for (int k = 0; k < 16 && tr_.channel_free; ++k) {
-        const auto [wi, wo] = probe(k);
-        const double v0 = model_.eval(p.data(), 0, wi, wo);
-        for (int c = 1; c < 3; ++c) tr_.channel_free = tr_.channel_free && model_.eval(p.data(), c, wi, wo) == v0;
-      }
-    }
+    for (size_t j = 0; j < lin.size() && tr_.channel_free; ++j)
+      tr_.channel_free = same_in_every_channel(tr_params(pv, 0, j));
     // A basis is constant when moving every shape variable (to a point inside its bounds) leaves
     // it unchanged at the probes.
     tr_.constant.assign(lin.size(), true);
@@ -679,12 +673,6 @@ class Problem {
       for (int c = 1; c < 3; ++c)
         if (tr_params(pv, c, j) != tr_params(pv, 0, j)) return 3;
     return 1;
-  }
-
-  // T′(z): the slope of the metric's transform (0 where apply_transform clamps).
-  double transform_slope(double z) const {
-    if (metric_.transform() == Transform::Identity) return 1.0;
-    return z > -1.0 + 1e-12 ? 1.0 / (1.0 + z) : 0.0;
   }
 
   // Makes tr_.bases hold every basis at pv's shape on the current stride (constant bases at the
@@ -787,7 +775,7 @@ class Problem {
           const double r = b.rw[k] * (apply_transform(metric_.transform(), z) - tm[k]);
           cost += r * r;
           if (!derivatives) continue;
-          const double slope = b.rw[k] * b.f[k] * transform_slope(z);
+          const double slope = b.rw[k] * b.f[k] * transform_slope(metric_.transform(), z);
           for (size_t j = 0; j < K; ++j) a[j] = slope * bj[j][k];
           for (size_t m = K; m < mc; ++m) {
             const size_t s = shape_of[size_t(c)][m - K];
@@ -846,7 +834,7 @@ class Problem {
         double* G = partial.data() + i * stride + size_t(c) * (K * K + K);
         for (size_t k = 0; k < b.n; ++k) {
           const double fm = b.f[k] * b.m[c][k];
-          const double w = b.rw[k] * b.f[k] * transform_slope(std::max(fm, 0.0));
+          const double w = b.rw[k] * b.f[k] * transform_slope(metric_.transform(), std::max(fm, 0.0));
           const double w2 = w * w;
           for (size_t j = 0; j < K; ++j) {
             const double bj = tr_.bases[i][q * K + j][k];
@@ -878,7 +866,6 @@ class Problem {
   }
 
  private:
-
   // β (per channel, per basis) → parameter values: linear ones directly, a pair (v, u) as
   // L = u + v, P = P_lo + (P_hi − P_lo) u/(u + v).
   void write_colours(const std::array<Eigen::VectorXd, 3>& beta, ParamValues& pv) const {
@@ -982,6 +969,11 @@ class Problem {
     const ParamValues pv = ParamValues::defaults(table_);
     std::vector<double> p = pv.values[0];
     for (const Basis& b : bases_) p[size_t(b.lin)] = 1.0;
+    return same_in_every_channel(p);
+  }
+
+  // Whether the model gives channels 1 and 2 the value of channel 0 at parameters p (probed).
+  bool same_in_every_channel(const std::vector<double>& p) const {
     for (int k = 0; k < 16; ++k) {
       const auto [wi, wo] = probe(k);
       const double v0 = model_.eval(p.data(), 0, wi, wo);

@@ -98,6 +98,35 @@ struct CookTorrance {
     }
   }
 
+  // The batch loop with N = 1 or 2 Fresnel terms (out1 unused for N = 1): eval_at's body without
+  // its early return, every product in eval_at's order, so each output equals eval_at to the bit.
+  // Every lane computes and the horizon test selects at the end; `&` (not `&&`) keeps the loads of
+  // wi_z and wo_z unconditional: a short-circuit test makes GCC sink the wo_z load under a branch,
+  // and a load that "could trap" blocks if-conversion and leaves the loop scalar (DESIGN.md §12;
+  // check: bench/bench_model_eval.cpp). `flatten` inlines the distribution, masking and Fresnel
+  // calls whatever GCC's inlining budget decides elsewhere: a call left in the body keeps the
+  // loop scalar too.
+  template <int N>
+  [[gnu::flatten]] static void batch_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
+                                          const double* __restrict wix, const double* __restrict wiy,
+                                          const double* __restrict wiz, const double* __restrict wox,
+                                          const double* __restrict woy, const double* __restrict woz,
+                                          double* __restrict out0, double* __restrict out1) {
+    const Ndf<double> ndf(p + kNdfOffset);
+    const double kd_pi = p[0] * kInvPi, ks = p[1];
+    const double tan_unit = SmithUnitBelow<Ndf>::tan_theta(ndf);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
+      const bool above = (iz > 0.0) & (oz > 0.0);
+      const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
+      const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
+      const double ch = hz / len, cd = 0.5 * len;
+      const double d = ndf.D(ch), g = batch_masking(ndf, tan_unit, iz, oz, ch, cd), den = 4.0 * iz * oz;
+      out0[k] = above ? kd_pi + ks * (fresnel[0].eval(cd) * d * g / den) : 0.0;  // seed 004 Eq. 1
+      if constexpr (N == 2) out1[k] = above ? kd_pi + ks * (fresnel[1].eval(cd) * d * g / den) : 0.0;
+    }
+  }
+
   // ρ at one direction pair from prepared terms (kd_pi = kd/π). Both directions must be unit.
   template <class T>
   static T eval_at(const T& kd_pi, const T& ks, const Ndf<T>& ndf, const Fresnel<T>& fresnel, const T& wix,
@@ -121,39 +150,18 @@ struct CookTorrance {
   }
 
   // ρ of one channel at n direction pairs given as structure-of-arrays; out[k] for pair k, the
-  // values of eval_at to the bit. The body is eval_at's without its early return: every lane
-  // computes, the horizon test selects at the end, and `&` (not `&&`) keeps the loads of wi_z
-  // and wo_z unconditional. A short-circuit test makes GCC sink the wo_z load under a branch; a
-  // load that "could trap" blocks if-conversion and leaves the loop scalar (DESIGN.md §12; check:
-  // -fopt-info-vec on a file that instantiates this, or bench/bench_model_eval.cpp). `flatten`
-  // inlines the distribution, masking and Fresnel calls whatever GCC's inlining budget decides
-  // elsewhere in the translation unit: a call left in the body keeps the loop scalar too.
-  [[gnu::flatten]] static void eval_batch(const double* p, int, std::size_t n, const double* __restrict wix,
-                         const double* __restrict wiy, const double* __restrict wiz, const double* __restrict wox,
-                         const double* __restrict woy, const double* __restrict woz, double* __restrict out) {
-    const Ndf<double> ndf(p + kNdfOffset);
-    const Fresnel<double> fresnel(p + fresnel_offset());
-    const double kd_pi = p[0] * kInvPi, ks = p[1];
-    const double tan_unit = SmithUnitBelow<Ndf>::tan_theta(ndf);
-    for (std::size_t k = 0; k < n; ++k) {
-      const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
-      const bool above = (iz > 0.0) & (oz > 0.0);
-      const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
-      const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
-      const double ch = hz / len, cd = 0.5 * len;
-      const double spec =
-          fresnel.eval(cd) * ndf.D(ch) * batch_masking(ndf, tan_unit, iz, oz, ch, cd) / (4.0 * iz * oz);
-      out[k] = above ? kd_pi + ks * spec : 0.0;
-    }
+  // values of eval_at to the bit.
+  static void eval_batch(const double* p, int, std::size_t n, const double* wix, const double* wiy,
+                         const double* wiz, const double* wox, const double* woy, const double* woz, double* out) {
+    const Fresnel<double> fresnel[1] = {Fresnel<double>(p + fresnel_offset())};
+    batch_loop<1>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out, nullptr);
   }
   // eval_batch at two values a, b of one Fresnel parameter (Model::eval_batch_pair): D, G and the
-  // cosines once, the Fresnel term twice, each product in eval_batch's order so both outputs
-  // equal eval_batch's to the bit. False (nothing written) for a parameter outside the Fresnel term.
-  [[gnu::flatten]] static bool eval_batch_pair(const double* p, int, int param, double a, double b, std::size_t n,
-                                               const double* __restrict wix, const double* __restrict wiy,
-                                               const double* __restrict wiz, const double* __restrict wox,
-                                               const double* __restrict woy, const double* __restrict woz,
-                                               double* __restrict out_a, double* __restrict out_b) {
+  // cosines once, the Fresnel term twice, both outputs equal to eval_batch's to the bit. False
+  // (nothing written) for a parameter outside the Fresnel term.
+  static bool eval_batch_pair(const double* p, int, int param, double a, double b, std::size_t n, const double* wix,
+                              const double* wiy, const double* wiz, const double* wox, const double* woy,
+                              const double* woz, double* out_a, double* out_b) {
     static const int fresnel_count = int(Fresnel<double>::params().size());
     const int f0 = fresnel_offset();
     if (param < f0 || param >= f0 + fresnel_count) return false;
@@ -163,21 +171,8 @@ struct CookTorrance {
     std::copy(p + f0, p + f0 + fresnel_count, fp_b);
     fp_a[param - f0] = a;
     fp_b[param - f0] = b;
-    const Ndf<double> ndf(p + kNdfOffset);
-    const Fresnel<double> fresnel_a(fp_a), fresnel_b(fp_b);
-    const double kd_pi = p[0] * kInvPi, ks = p[1];
-    const double tan_unit = SmithUnitBelow<Ndf>::tan_theta(ndf);
-    for (std::size_t k = 0; k < n; ++k) {
-      const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
-      const bool above = (iz > 0.0) & (oz > 0.0);
-      const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
-      const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
-      const double ch = hz / len, cd = 0.5 * len;
-      const double d = ndf.D(ch), g = batch_masking(ndf, tan_unit, iz, oz, ch, cd), den = 4.0 * iz * oz;
-      const double spec_a = fresnel_a.eval(cd) * d * g / den, spec_b = fresnel_b.eval(cd) * d * g / den;
-      out_a[k] = above ? kd_pi + ks * spec_a : 0.0;
-      out_b[k] = above ? kd_pi + ks * spec_b : 0.0;
-    }
+    const Fresnel<double> fresnel[2] = {Fresnel<double>(fp_a), Fresnel<double>(fp_b)};
+    batch_loop<2>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out_a, out_b);
     return true;
   }
   static void eval_batch(const double* p, int c, const SampleSet& s, double* out) {
