@@ -172,16 +172,33 @@ ProcedureResult bagher_procedure(const Model& model, const MeasuredBrdf& data, c
                                                      "{} cells are measured",
                                                      pts.size(), slice_h.size()));
     if (opt.progress) opt.progress(fmt::format("bagher: channel {}: θd = 0 slice ({} cells)", c, pts.size()));
-    const StepResult s1 = fit_slice(model, c, p, free, pts, opt);
+    const std::vector<double> start = p;
+    StepResult s1 = fit_slice(model, c, p, free, pts, opt);
+    r.fit.iterations += s1.iterations;
+    double sign = 1;  // of F on the slice
+    if (!(p[size_t(l.ks)] > t[size_t(l.ks)].lower)) {
+      // Fr at its bound: the slice's lobe may be negative. Eq. 11 gives F(0) = F0 − F1 < 0 when
+      // F1 > F0, as published fits have (white-paint red: F(0.5°) = −1.2e-3, bagher_fresnel.h), so
+      // the slice is also fitted with F ≡ −1 and the better fit kept.
+      std::vector<double> q = start;
+      q[size_t(l.f0)] = -1.0;
+      const StepResult negative = fit_slice(model, c, q, free, pts, opt);
+      r.fit.iterations += negative.iterations;
+      if (negative.cost < s1.cost) {
+        s1 = negative;
+        p = q;
+        p[size_t(l.f0)] = 1.0;  // step 2 divides by the lobe with F ≡ 1
+        sign = -1;
+      }
+    }
     if (!std::isfinite(s1.cost))
       throw FitError(fmt::format("bagher procedure: no start gave a finite fit of the θd = 0 slice (channel {})", c));
-    r.fit.iterations += s1.iterations;
     converged = converged && s1.converged;
     std::string shape;
     for (int i : l.shape) shape += fmt::format(" {} = {:.6g}", t[size_t(i)].name, p[size_t(i)]);
     r.steps.push_back(fmt::format("channel {}: θd = 0 slice (seed 000 Eq. 12, {} cells): kd = {:.6g}, Fr = {:.6g},{}"
                                   " (cost {:.3g})",
-                                  c, pts.size(), p[size_t(l.kd)], p[size_t(l.ks)], shape, s1.cost));
+                                  c, pts.size(), p[size_t(l.kd)], sign * p[size_t(l.ks)], shape, s1.cost));
 
     // Step 2 (seed 000 §5.2): ks F(θd) = (m − kd/π)/s(θd) on the θh = 0 slice, Eq. 11 by
     // linear least squares in (ks F0, ks (1 − F0), ks F1).

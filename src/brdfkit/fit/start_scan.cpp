@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "brdfkit/fit/sample_stride.h"
+
 namespace brdfkit::fit {
 
 namespace {
@@ -33,7 +35,7 @@ std::vector<double> scan_grid(const ParamSpec& s) {
   return out;
 }
 
-std::size_t scan_stride(std::size_t samples) { return std::max<std::size_t>(1, samples / 20000); }
+std::size_t scan_stride(std::size_t samples) { return coprime_stride(samples / 20000); }
 
 StartScan scan_start(const ParamTable& table, const std::vector<int>& var_param, const std::vector<double>& start,
                      const std::function<double(const std::vector<double>&)>& cost, int sweeps) {

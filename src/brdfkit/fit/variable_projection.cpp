@@ -1,6 +1,7 @@
 #include "brdfkit/fit/variable_projection.h"
 
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Dense>
@@ -12,6 +13,8 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/box_least_squares.h"
+#include "brdfkit/fit/sample_stride.h"
+#include "brdfkit/fit/stall_stop.h"
 #include "brdfkit/fit/start_scan.h"
 
 namespace brdfkit::fit {
@@ -1084,12 +1087,13 @@ double draw(const ParamSpec& s, std::mt19937_64& rng) {
   return s.lower + t * (s.upper - s.lower);
 }
 
-// Sample strides of the coarse-to-fine levels, the whole domain (1) last.
+// Sample strides of the coarse-to-fine levels (67, 17, 7: fit/sample_stride.h), the whole domain
+// (1) last.
 std::vector<size_t> levels(size_t samples, bool coarse_to_fine) {
   std::vector<size_t> out;
   if (coarse_to_fine)
     for (size_t s : {64, 16, 4})
-      if (samples / s >= 30000) out.push_back(s);
+      if (samples / coprime_stride(s) >= 30000) out.push_back(coprime_stride(s));
   out.push_back(1);
   return out;
 }
@@ -1162,13 +1166,17 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitOptions& 
       so.parameter_tolerance = last ? 1e-10 : 1e-6;
       so.logging_type = ceres::SILENT;
       so.num_threads = 1;  // the cost function is parallel inside
+      StallStop stall;
+      so.callbacks.push_back(&stall);
       ceres::Solver::Summary summary;
       ceres::Solve(so, &cp, &summary);
       total_iterations += int(summary.iterations.size()) - 1;
       usable = summary.IsSolutionUsable();
       if (last) {
-        converged = summary.termination_type == ceres::CONVERGENCE;
-        message = summary.message;
+        converged = summary.termination_type == ceres::CONVERGENCE || stall.stalled();
+        message = stall.stalled() ? fmt::format("Stalled: the last {} steps lowered the cost by < {:g} relative.",
+                                                StallStop::kWindow, StallStop::kRelative)
+                                  : summary.message;
       } else if (usable && !problem.best_point().empty()) {
         // Ceres evaluates a step before its parameter tolerance discards it: the next level starts
         // from the lowest cost this one saw (on exact data one level sooner at the optimum).

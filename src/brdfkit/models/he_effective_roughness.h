@@ -31,6 +31,12 @@ template <class T> T k_factor(const T& cos_theta, const T& sigma0, const T& tau)
 // Root of x e^{x²/2} = f0 (f0 ≥ 0). Brackets: x ≤ f0 when x ≤ 1, x ≤ sqrt(2 ln f0) when x > 1.
 inline double solve_z0_ratio(double f0) {
   if (!(f0 > 0)) return 0.0;
+  // Small f0 (most pairs when τ ≫ σ0: erfc is tiny away from grazing): the inverted series
+  // x = f0 − f0³/2 + 5 f0⁵/8 − O(f0⁷) is exact in doubles, where Newton crawls for ~1 µs.
+  if (f0 < 1e-3) {
+    const double f2 = f0 * f0;
+    return f0 * (1 - f2 * (0.5 - 0.625 * f2));
+  }
   const double hi = f0 <= 1 ? f0 : std::max(1.0, std::sqrt(2 * std::log(f0)));
   auto f = [f0](double x) {
     const double e = std::exp(0.5 * x * x);
