@@ -54,7 +54,9 @@ TEST(FitStarts, ScannedStartIsNeverWorseThanTheDefaultsOnCornell) {
       std::printf("%-16s %-18s ngan from the defaults %.6g, from the scan %.6g\n", file, name, plain.metric_value,
                   scanned.metric_value);
       EXPECT_EQ(plain.scan_points, 0);
-      EXPECT_LE(scanned.metric_value, plain.metric_value * (1 + 1e-9));
+      // Both fits may end at a stall (fit/stall_stop.h): in one basin a few 1e-6 apart (measured:
+      // acryl_blue ashikhmin-shirley 0.676259 from the defaults, 0.676261 from the scan).
+      EXPECT_LE(scanned.metric_value, plain.metric_value * (1 + 2e-5));
     }
   }
 }

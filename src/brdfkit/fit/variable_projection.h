@@ -21,8 +21,9 @@ namespace brdfkit::fit {
 struct FitOptions {
   int starts = 1;
   std::uint64_t seed = 1;
-  int max_iterations = 100;  // per start and level
-  // Solve first on every 64th / 16th / 4th sample of the domain (while ≥ 30 000 samples remain),
+  int max_iterations = 100;  // per start and level; a level also ends when it stalls (fit/stall_stop.h)
+  // Solve first on every 67th / 17th / 7th sample of the domain (while ≥ 30 000 samples remain;
+  // strides coprime with the domain's rows, fit/sample_stride.h),
   // each level starting from the lowest-cost point the previous one evaluated (its result, or a
   // last step its tolerances discarded), then on the whole domain: the last level
   // alone decides the result, so it is the full domain's optimum (DESIGN.md §7), reached in fewer
@@ -41,7 +42,7 @@ struct FitResult {
   int best_start = 0;
   int scan_points = 0;      // points the scan of start 0 evaluated (0: start 0 was the defaults)
   double seconds = 0;       // wall time of the fit (domain construction excluded)
-  bool converged = false;   // the best start's solver reported convergence
+  bool converged = false;   // the best start's solver reported convergence (or a stall)
   std::string message;      // the best start's solver report, one line
 };
 

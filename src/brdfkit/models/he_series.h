@@ -3,8 +3,9 @@
 //   Σ_{m≥1} t_m,   t_m = e^{−g} gᵐ/(m!·m) · exp(−c/m),   c = τ² v_xy²/4,
 // summed with a rigorous bound on what it leaves out.
 //
-// Terms are formed in log space, log t_m = −g + m ln g − ln m! − ln m − c/m, because for rough
-// surfaces (g in the hundreds) e^{−g} underflows while gᵐ/m! overflows.
+// The first term is formed in log space, log t_m = −g + m ln g − ln m! − ln m − c/m, because for
+// rough surfaces (g in the hundreds) e^{−g} underflows while gᵐ/m! overflows; doubles then walk by
+// term ratios, Jets form every term in log space.
 //
 // Truncation rule (why it is safe): the summation starts near the Poisson mode m ≈ g and walks
 // outwards in both directions. Going up, the ratio r_m = t_{m+1}/t_m = g m/(m+1)² · e^{c/(m(m+1))}
