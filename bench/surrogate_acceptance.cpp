@@ -1,5 +1,5 @@
 // Issue #5's surrogate acceptance, on all materials (too slow for the CI test budget; the
-// always-run part is tests/procedures/): for each of ≥ 10 published Bagher SGD fits
+// always-run part is tests/surrogates/): for each of ≥ 10 published Bagher SGD fits
 // (bagher2012-sgd.json) tabulated as a full-size MERL table,
 //   1. brdfkit's fit of Löw's smooth model (low-smooth) under `low-e2` must reach an E2 ≤ the
 //      E2 of Löw's published smooth parameters (low2012-smooth-E2.json) on that surrogate;
