@@ -31,8 +31,9 @@ template <class T> T k_factor(const T& cos_theta, const T& sigma0, const T& tau)
 // Root of x e^{x²/2} = f0 (f0 ≥ 0). Brackets: x ≤ f0 when x ≤ 1, x ≤ sqrt(2 ln f0) when x > 1.
 inline double solve_z0_ratio(double f0) {
   if (!(f0 > 0)) return 0.0;
-  // Small f0 (most pairs when τ ≫ σ0: erfc is tiny away from grazing): the inverted series
-  // x = f0 − f0³/2 + 5 f0⁵/8 − O(f0⁷) is exact in doubles, where Newton crawls for ~1 µs.
+  // Small f0 (most pairs when τ ≫ σ0: erfc is tiny away from grazing): the series inverse of
+  // x e^{x²/2} = f0 (He 1991 Eq. 81 over σ0), x = f0 − f0³/2 + 5 f0⁵/8 + O(f0⁷), is exact in
+  // doubles there, where Newton crawls for ~1 µs.
   if (f0 < 1e-3) {
     const double f2 = f0 * f0;
     return f0 * (1 - f2 * (0.5 - 0.625 * f2));
