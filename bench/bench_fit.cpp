@@ -21,8 +21,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "brdfkit/fit/metric.h"
-#include "brdfkit/fit/variable_projection.h"
+#include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/fit/engine/variable_projection.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"

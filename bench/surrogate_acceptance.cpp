@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/procedure.h"
+#include "brdfkit/fit/procedure/procedure.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/measured/merl_tabulate.h"
 #include "brdfkit/models/published_fits.h"

@@ -12,15 +12,15 @@
 
 #include "brdfkit/analysis/albedo_curve.h"
 #include "brdfkit/analysis/backscatter.h"
-#include "brdfkit/analysis/diffraction_map.h"
+#include "brdfkit/measured/diffraction_map.h"
 #include "brdfkit/analysis/fresnel_extraction.h"
 #include "brdfkit/analysis/ndf_estimation.h"
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/file_digest.h"
+#include "brdfkit/core/file_digest.h"
 #include "brdfkit/fit/fit_record.h"
-#include "brdfkit/fit/metric_report.h"
-#include "brdfkit/fit/variable_projection.h"
+#include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/fit/engine/variable_projection.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
 
@@ -152,10 +152,10 @@ Output fresnel(const AnalyzeArgs& a, const MeasuredBrdf& data) {
 }
 
 Output diffraction(const AnalyzeArgs& a, const MeasuredBrdf& data) {
-  analysis::DiffractionOptions opt;
+  DiffractionOptions opt;
   opt.threshold = a.threshold;
   if (a.nodes > 0) opt.theta_h_cells = opt.theta_d_cells = opt.phi_d_samples = a.nodes;
-  const analysis::DiffractionMap r = analysis::diffraction_map(data, opt);
+  const DiffractionMap r = diffraction_map(data, opt);
   Output o;
   o.text = fmt::format("det(grad log rho, grad f) over (theta_h, theta_d), {} x {} cells, rho averaged over {} phi_d "
                        "(seed 004 4.2); diffraction-dominated where |det| < {}\n",
@@ -268,7 +268,7 @@ Output ndf(const AnalyzeArgs& a, const MeasuredBrdf& data) {
     params[model->params()[i].name] = json::array({values.values[0][i], values.values[1][i], values.values[2][i]});
   doc["parameters"] = params;
   doc["ndf_table"] = model->table_json();
-  doc["data"] = {{"file", a.file}, {"sha256", fit::sha256_file(a.file)}};
+  doc["data"] = {{"file", a.file}, {"sha256", sha256_file(a.file)}};
   doc["grid_coarsen"] = a.coarsen;
   o.text += fit::format_params(*model, values);
   const auto metrics = fit::report_metrics(data, *model, values, report, {a.coarsen});

@@ -7,9 +7,9 @@
 #include <iostream>
 #include <memory>
 
-#include "brdfkit/fit/file_digest.h"
+#include "brdfkit/core/file_digest.h"
 #include "brdfkit/fit/fit_record.h"
-#include "brdfkit/fit/metric_report.h"
+#include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/param_source.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
@@ -31,7 +31,7 @@ int run_error(const ErrorArgs& a) {
   const int saved_coarsen = loaded.record ? loaded.record->coarsen : 1;
   const int coarsen = a.coarsen > 0 ? a.coarsen : saved_coarsen;
   const auto data = load_measured(a.file);
-  const std::string sha = fit::sha256_file(a.file);
+  const std::string sha = sha256_file(a.file);
   if (loaded.record && !loaded.record->data_sha256.empty() && loaded.record->data_sha256 != sha)
     std::cerr << fmt::format("brdfkit: warning: {} is not the file this fit was made on (sha256 {} != {})\n", a.file,
                              sha, loaded.record->data_sha256);

@@ -10,10 +10,10 @@
 #include <memory>
 
 #include "brdfkit/core/atomic_file.h"
-#include "brdfkit/fit/file_digest.h"
+#include "brdfkit/core/file_digest.h"
 #include "brdfkit/fit/fit_job.h"
-#include "brdfkit/fit/metric_cache.h"
-#include "brdfkit/fit/metric_report.h"
+#include "brdfkit/fit/metric/metric_cache.h"
+#include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
 
@@ -45,7 +45,7 @@ int run_fit(const FitArgs& a) {
   const fit::MetricCache domains(*data);
   fit::FitJobResult r;
   try {
-    r = fit::run_fit_job(model, *data, a.file, fit::sha256_file(a.file), opt);
+    r = fit::run_fit_job(model, *data, a.file, sha256_file(a.file), opt);
   } catch (const fit::FitError& e) {
     std::cerr << "brdfkit: fit failed: " << e.what() << "\n";
     return 1;

@@ -7,9 +7,9 @@
 #include <iostream>
 #include <memory>
 
-#include "brdfkit/fit/fit_batch.h"
-#include "brdfkit/fit/metric_report.h"
-#include "brdfkit/fit/model_sets.h"
+#include "brdfkit/fit/batch/fit_batch.h"
+#include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/models/model_sets.h"
 #include "command.h"
 
 namespace brdfkit::cli {
@@ -24,7 +24,7 @@ struct FitAllArgs {
 };
 
 int run_fit_all(const FitAllArgs& a) {
-  const std::vector<const Model*> models = fit::parse_model_set(a.models);
+  const std::vector<const Model*> models = parse_model_set(a.models);
   fit::BatchOptions opt;
   opt.job.procedure = a.procedure;
   opt.job.metric = a.metric;
@@ -56,7 +56,7 @@ const CommandRegistration reg("fit-all", [](CLI::App& app) {
       ->required();
   sub->add_option("--models", a->models,
                   "Comma-separated model names, 'all' (the catalogue) or 'single-lobe' (models with exactly one "
-                  "specular lobe: one per-channel linear lobe scale besides kd, see fit/model_sets.h)")
+                  "specular lobe: one per-channel linear lobe scale besides kd, see models/model_sets.h)")
       ->capture_default_str();
   auto* proc = sub->add_option("--procedure", a->procedure,
                                "Fitting procedure: ngan, bagher, low-e1, low-e2, hp-2step, hp-1step (DESIGN.md §8)");

@@ -19,7 +19,7 @@
 
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/file_digest.h"
+#include "brdfkit/core/file_digest.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"
@@ -209,7 +209,7 @@ int run_info(const Options& opt) {
       results[k] = summarize(*load_measured(src.files[k]));
       // SHA-256 names the exact data (DESIGN.md §1); MERL files can be checked against
       // data/merl/merl-sha256.tsv.
-      digests[k] = fit::sha256_file(src.files[k]);
+      digests[k] = sha256_file(src.files[k]);
     } catch (...) {
       errors[k] = std::current_exception();
     }

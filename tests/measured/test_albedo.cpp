@@ -9,7 +9,7 @@
 #include "brdfkit/measured/merl_tabulate.h"
 #include "brdfkit/measured/rgl_tensor.h"
 #include "brdfkit/measured/summary.h"
-#include "test_util.h"
+#include "support/test_util.h"
 
 using namespace brdfkit;
 

@@ -12,7 +12,7 @@
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/measured/merl_tabulate.h"
-#include "test_util.h"
+#include "support/test_util.h"
 
 using namespace brdfkit;
 using merl::Cell;

@@ -9,7 +9,7 @@
 #include "brdfkit/core/warp.h"
 #include "brdfkit/models/cook_torrance_catalogue.h"
 #include "brdfkit/models/model.h"
-#include "param_sets.h"
+#include "support/param_sets.h"
 
 using namespace brdfkit;
 

@@ -8,7 +8,7 @@
 #include "brdfkit/analysis/model_checks.h"
 #include "brdfkit/models/cook_torrance_catalogue.h"
 #include "brdfkit/models/model.h"
-#include "param_sets.h"
+#include "support/param_sets.h"
 
 using namespace brdfkit;
 

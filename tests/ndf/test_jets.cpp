@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "all_ndfs.h"
-#include "ndf_test_util.h"
+#include "support/all_ndfs.h"
+#include "support/ndf_test_util.h"
 
 namespace brdfkit {
 namespace {

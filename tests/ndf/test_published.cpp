@@ -8,9 +8,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "all_ndfs.h"
-#include "brdfkit/ndf/upper_gamma.h"
-#include "test_util.h"
+#include "support/all_ndfs.h"
+#include "brdfkit/core/upper_gamma.h"
+#include "support/test_util.h"
 
 namespace brdfkit {
 namespace {

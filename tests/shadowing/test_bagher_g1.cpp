@@ -10,8 +10,8 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/shadowing/bagher_g1.h"
-#include "sgd_for_tests.h"
-#include "test_util.h"
+#include "support/sgd_for_tests.h"
+#include "support/test_util.h"
 
 namespace brdfkit {
 namespace {

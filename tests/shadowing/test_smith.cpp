@@ -13,7 +13,7 @@
 #include "brdfkit/ndf/ggx.h"
 #include "brdfkit/ndf/sgd.h"
 #include "brdfkit/shadowing/smith.h"
-#include "sgd_for_tests.h"
+#include "support/sgd_for_tests.h"
 
 namespace brdfkit {
 namespace {

@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "brdfkit/analysis/sphere_integral.h"
+#include "brdfkit/core/sphere_integral.h"
 
 namespace brdfkit {
 

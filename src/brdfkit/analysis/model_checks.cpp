@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "brdfkit/analysis/sphere_integral.h"
+#include "brdfkit/core/sphere_integral.h"
 
 namespace brdfkit {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "brdfkit/analysis/tabulated_cook_torrance.h"
-#include "brdfkit/fit/metric.h"
+#include "brdfkit/fit/metric/metric.h"
 
 namespace brdfkit::analysis {
 

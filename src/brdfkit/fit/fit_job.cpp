@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/metric_report.h"
-#include "brdfkit/fit/procedure.h"
+#include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/fit/procedure/procedure.h"
 
 namespace brdfkit::fit {
 

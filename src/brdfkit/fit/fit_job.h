@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/fit/fit_record.h"
-#include "brdfkit/fit/variable_projection.h"
+#include "brdfkit/fit/engine/variable_projection.h"
 #include "brdfkit/measured/measured_brdf.h"
 #include "brdfkit/models/model.h"
 

@@ -3,7 +3,7 @@
 // DESIGN.md §5). Evaluated as published: it goes negative near θd = 0 when F1 > F0 (3 of the
 // 100 published fits, down to −0.07); the total BRDF stays positive through the diffuse term,
 // and a fit that wants F ≥ 0 bounds F1 ≤ F0 itself.
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

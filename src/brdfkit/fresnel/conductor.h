@@ -8,7 +8,7 @@
 // With k = 0 and η ≥ 1, a = g of the dielectric form and F equals DielectricFresnel (tested).
 #include <cmath>
 
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

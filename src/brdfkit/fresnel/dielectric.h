@@ -6,7 +6,7 @@
 // η is per channel (dispersion); a paper that publishes one η (Löw 2012) sets all three.
 #include <cmath>
 
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

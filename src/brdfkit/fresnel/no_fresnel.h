@@ -1,6 +1,6 @@
 #pragma once
 // F = 1, for models that omit the Fresnel factor (DESIGN.md §5); no parameters.
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Schlick's Fresnel approximation F = F0 + (1 − F0)(1 − cos θd)⁵ (Schlick 1994; DESIGN.md §5).
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

@@ -14,7 +14,7 @@
 #include "brdfkit/fresnel/dielectric.h"
 #include "brdfkit/fresnel/schlick.h"
 #include "brdfkit/models/lobe_mixture.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

@@ -17,7 +17,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/warp.h"
 #include "brdfkit/measured/sample_set.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 #include "brdfkit/ndf/beckmann.h"
 #include "brdfkit/shadowing/smith.h"
 

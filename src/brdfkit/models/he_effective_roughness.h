@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/ndf/scalar_chain.h"
+#include "brdfkit/core/scalar_chain.h"
 
 namespace brdfkit {
 

@@ -20,7 +20,7 @@
 #include <limits>
 #include <type_traits>
 
-#include "brdfkit/ndf/scalar_chain.h"
+#include "brdfkit/core/scalar_chain.h"
 
 namespace brdfkit {
 

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/ndf/scalar_chain.h"
+#include "brdfkit/core/scalar_chain.h"
 
 namespace brdfkit {
 

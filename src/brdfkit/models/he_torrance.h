@@ -40,7 +40,7 @@
 #include "brdfkit/models/he_effective_roughness.h"
 #include "brdfkit/models/he_series.h"
 #include "brdfkit/models/he_shadowing.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

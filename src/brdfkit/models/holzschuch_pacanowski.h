@@ -32,7 +32,7 @@
 #include "brdfkit/models/hp_diffraction_lobe.h"
 #include "brdfkit/models/lobe_mixture.h"
 #include "brdfkit/models/model.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 #include "brdfkit/ndf/exponential_power.h"
 #include "brdfkit/shadowing/exponential_power_g1.h"
 

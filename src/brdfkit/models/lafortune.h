@@ -17,7 +17,7 @@
 
 #include "brdfkit/core/warp.h"
 #include "brdfkit/models/lobe_mixture.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

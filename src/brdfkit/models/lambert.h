@@ -4,7 +4,7 @@
 #include <string_view>
 
 #include "brdfkit/core/warp.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

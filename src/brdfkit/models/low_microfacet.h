@@ -28,7 +28,7 @@
 #include "brdfkit/fresnel/dielectric.h"
 #include "brdfkit/models/lobe_mixture.h"
 #include "brdfkit/models/model.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 #include "brdfkit/ndf/abc_facet.h"
 #include "brdfkit/shadowing/v_groove.h"
 

@@ -26,7 +26,7 @@
 #include "brdfkit/core/warp.h"
 #include "brdfkit/fresnel/dielectric.h"
 #include "brdfkit/models/lobe_mixture.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

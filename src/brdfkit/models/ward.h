@@ -13,7 +13,7 @@
 
 #include "brdfkit/core/warp.h"
 #include "brdfkit/models/lobe_mixture.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

@@ -16,7 +16,7 @@
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 
 namespace brdfkit {
 

@@ -5,7 +5,7 @@
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {

@@ -9,8 +9,8 @@
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/models/param.h"
-#include "brdfkit/ndf/scalar_chain.h"
+#include "brdfkit/core/param.h"
+#include "brdfkit/core/scalar_chain.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {

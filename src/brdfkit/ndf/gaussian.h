@@ -10,9 +10,9 @@
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 #include "brdfkit/ndf/slope_space.h"
-#include "brdfkit/ndf/scalar_chain.h"
+#include "brdfkit/core/scalar_chain.h"
 #include "brdfkit/ndf/theta_cdf.h"
 #include "brdfkit/shadowing/smith.h"
 

@@ -9,9 +9,9 @@
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
-#include "brdfkit/models/param.h"
+#include "brdfkit/core/param.h"
 #include "brdfkit/ndf/ggx.h"
-#include "brdfkit/ndf/upper_gamma.h"
+#include "brdfkit/core/upper_gamma.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {

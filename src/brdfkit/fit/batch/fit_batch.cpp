@@ -1,0 +1,339 @@
+#include "brdfkit/fit/batch/fit_batch.h"
+
+#include <fmt/format.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
+
+#include "brdfkit/core/atomic_file.h"
+#include "brdfkit/core/error.h"
+#include "brdfkit/core/file_digest.h"
+#include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/fit/metric/metric_cache.h"
+#include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/measured/load.h"
+#include "brdfkit/models/published_fits.h"
+
+namespace brdfkit::fit {
+
+namespace fs = std::filesystem;
+
+std::vector<BatchInput> list_batch_inputs(const std::vector<std::string>& args) {
+  std::vector<BatchInput> out;
+  for (const std::string& a : args) {
+    std::error_code ec;
+    if (fs::is_directory(a, ec)) {
+      std::vector<fs::path> files;
+      for (const auto& e : fs::directory_iterator(a, ec))
+        if (e.is_regular_file(ec) && has_measured_extension(e.path())) files.push_back(e.path());
+      if (ec) throw InputError(a, "cannot list the folder: " + ec.message());
+      std::sort(files.begin(), files.end());
+      for (const auto& f : files) out.push_back({f.stem().string(), f});
+    } else {
+      out.push_back({fs::path(a).stem().string(), fs::path(a)});
+    }
+  }
+  if (out.empty()) throw InputError("fit-all", "no measured file among the inputs (.binary, .bsdf, .brdf, .alta)");
+  std::map<std::string, fs::path> seen;
+  for (const BatchInput& in : out) {
+    auto [it, fresh] = seen.emplace(in.material, in.file);
+    if (!fresh)
+      throw InputError(in.file.string(), fmt::format("material name '{}' is also the name of {}: results would "
+                                                     "share OUTDIR/{}/; rename one",
+                                                     in.material, it->second.string(), in.material));
+  }
+  return out;
+}
+
+namespace {
+
+// One material's data, checksum and report metrics, loaded by the first fit that needs them and
+// released when its last fit ends (a full MERL file and its metric grids weigh ~0.5 GB).
+struct Material {
+  std::mutex mu;
+  bool sha_done = false, loaded = false, published_done = false;
+  std::string sha, error;
+  std::unique_ptr<MeasuredBrdf> data;
+  std::unique_ptr<MetricCache> cache;  // every fit of the material reuses its domains (metric_cache.h)
+  std::map<std::string, std::shared_ptr<const Metric>> metrics;
+  std::map<std::string, std::string> undefined;  // metric id → why the data cannot answer it
+  std::optional<double> published;
+  int remaining = 0;
+};
+
+// Removes what a killed run left: write_file_atomically's "<file>.tmp.<pid>" of a process gone.
+void remove_stale_temporaries(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const auto at = name.rfind(".tmp.");
+    if (at == std::string::npos) continue;
+    const std::string pid = name.substr(at + 5);
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (::kill(pid_t(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;  // its writer may still run
+    fs::remove(e.path(), ec);
+  }
+}
+
+std::optional<nlohmann::json> read_json(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
+
+// Everything shared by the threads of one batch.
+class Batch {
+ public:
+  Batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models, const fs::path& out_dir,
+        const BatchOptions& opt)
+      : inputs_(inputs), models_(models), out_(out_dir), opt_(opt), materials_(inputs.size()) {
+    metric_ = fitting_metric(opt.job);
+    report_.push_back(metric_);
+    for (const std::string& id : opt.report)
+      if (std::find(report_.begin(), report_.end(), id) == report_.end()) report_.push_back(id);
+    for (auto& m : materials_) m.remaining = int(models.size());
+    if (!opt.compare.empty()) {
+      published_.emplace(PublishedFits::read(opt.compare));
+      if (!published_->supported()) throw InputError(opt.compare, published_->unsupported_reason());
+      const auto names = published_->materials();
+      published_names_.insert(names.begin(), names.end());
+    }
+  }
+
+  BatchSummary run() {
+    const auto t0 = std::chrono::steady_clock::now();
+    const size_t n = inputs_.size() * models_.size();
+    rows_.resize(n);
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+      for (size_t k = next++; k < n; k = next++) run_one(k);
+    };
+    const int threads = std::max(1, std::min<int>(opt_.jobs, int(n)));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+
+    BatchSummary s;
+    s.procedure = opt_.job.procedure;
+    s.fit_metric = metric_;
+    for (const auto& in : inputs_) s.materials.push_back(in.material);
+    for (const Model* m : models_) s.models.emplace_back(m->name());
+    s.rows = std::move(rows_);
+    if (published_) {
+      s.published_file = opt_.compare;
+      for (auto& m : materials_) s.published.push_back(m.published);
+    }
+    s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_file_atomically(out_ / "summary.csv", summary_csv(s));
+    write_file_atomically(out_ / "table.txt", summary_table(s));
+    log(fmt::format("fit-all: {} fits: {} fitted, {} skipped (saved by an earlier run), {} failed; {:.1f} s; "
+                    "results in {}",
+                    n, s.count(FitStatus::Fitted), s.count(FitStatus::Resumed), s.count(FitStatus::Failed),
+                    s.wall_seconds, out_.string()));
+    return s;
+  }
+
+ private:
+  void log(const std::string& line) {
+    if (!opt_.log) return;
+    std::lock_guard lock(log_mu_);
+    opt_.log(line);
+  }
+
+  void run_one(size_t k) {
+    const size_t mi = k / models_.size();
+    const BatchInput& in = inputs_[mi];
+    const Model& model = *models_[k % models_.size()];
+    Material& mat = materials_[mi];
+    BatchRow& row = rows_[k];
+    row.material = in.material;
+    row.model = std::string(model.name());
+    const fs::path json = out_ / in.material / (row.model + ".json");
+    try {
+      fit_or_resume(in, model, mat, row, json);
+    } catch (const std::exception& e) {
+      row.status = FitStatus::Failed;
+      row.reason = e.what();
+      row.metrics.clear();
+    }
+    if (published_) compare(in, mat);
+    {
+      std::lock_guard lock(mat.mu);
+      if (--mat.remaining == 0) {
+        mat.metrics.clear();
+        mat.cache.reset();
+        mat.data.reset();
+      }
+    }
+    const size_t done = ++done_;
+    const std::string what = fmt::format("[{}/{}] {} {}", done, rows_.size(), in.material, row.model);
+    if (row.status == FitStatus::Failed) {
+      log(fmt::format("{}: FAILED: {}", what, row.reason));
+      return;
+    }
+    const auto v = row.metric(metric_);
+    const std::string value = v ? fmt::format("{} {:.5g}", metric_, *v) : metric_ + " n/a";
+    if (row.status == FitStatus::Resumed)
+      log(fmt::format("{}: skipped, saved by an earlier run ({})", what, value));
+    else
+      log(fmt::format("{}: {}, {:.1f} s{}", what, value, row.seconds, row.converged ? "" : " (not converged)"));
+  }
+
+  // The data's checksum (for the resume check) without loading the data.
+  const std::string& checksum(const BatchInput& in, Material& mat) {
+    std::lock_guard lock(mat.mu);
+    if (!mat.sha_done) {
+      mat.sha_done = true;
+      try {
+        mat.sha = sha256_file(in.file);
+      } catch (const std::exception& e) {
+        mat.error = e.what();
+      }
+    }
+    if (!mat.error.empty()) throw InputError("data", mat.error);
+    return mat.sha;
+  }
+
+  // Loads the data and builds the report metrics once; the caller holds mat.mu.
+  void load_locked(const BatchInput& in, Material& mat) {
+    if (!mat.error.empty()) throw InputError("data", mat.error);
+    if (mat.loaded) return;
+    mat.loaded = true;
+    try {
+      mat.data = load_measured(in.file);
+    } catch (const std::exception& e) {
+      mat.error = e.what();
+      throw;
+    }
+    mat.cache = std::make_unique<MetricCache>(*mat.data);
+    for (const std::string& id : report_) {
+      try {
+        mat.metrics[id] = shared_metric(id, *mat.data, MetricOptions{opt_.job.coarsen});
+      } catch (const InputError& e) {  // MetricUndefined and grids a coarsening cannot make
+        mat.undefined[id] = e.what();
+      }
+    }
+  }
+
+  std::vector<MetricReport> report(Material& mat, const Model& model, const ParamValues& values) {
+    std::vector<MetricReport> out;
+    for (const std::string& id : report_) {
+      std::shared_ptr<const Metric> m;
+      {
+        std::lock_guard lock(mat.mu);
+        auto it = mat.metrics.find(id);
+        if (it == mat.metrics.end()) {
+          out.push_back({id, std::nullopt, mat.undefined[id]});
+          continue;
+        }
+        m = it->second;
+      }
+      const double v = m->value(model, values);
+      if (!std::isfinite(v)) throw FitError(fmt::format("metric {} is not finite at the fitted parameters", id));
+      out.push_back({id, v, ""});
+    }
+    return out;
+  }
+
+  void fit_or_resume(const BatchInput& in, const Model& model, Material& mat, BatchRow& row, const fs::path& json) {
+    const std::string sha = checksum(in, mat);
+    if (auto saved = read_json(json); saved && fit_job_matches(*saved, row.model, sha, opt_.job, report_)) {
+      row.status = FitStatus::Resumed;
+      row.json = json.string();
+      for (const std::string& id : report_) {
+        const auto& v = (*saved)["metrics"][id];
+        row.metrics.emplace_back(id, v.is_number() ? std::optional<double>(v.get<double>()) : std::nullopt);
+      }
+      const auto& f = (*saved)["fit"];
+      row.seconds = f.value("seconds", 0.0);
+      row.iterations = f.value("iterations", 0);
+      row.converged = f.value("converged", false);
+      return;
+    }
+    const MeasuredBrdf* data = nullptr;
+    {
+      std::lock_guard lock(mat.mu);
+      load_locked(in, mat);
+      data = mat.data.get();
+    }
+    FitJobResult r = run_fit_job(model, *data, in.file.string(), sha, opt_.job);
+    r.record.metrics = report(mat, model, r.record.values);
+    const nlohmann::json doc = fit_job_json(r, opt_.job, in.material);
+    std::error_code ec;
+    fs::create_directories(json.parent_path(), ec);
+    if (ec) throw InputError(json.parent_path().string(), "cannot create the folder: " + ec.message());
+    write_file_atomically(json, doc.dump(2) + "\n");
+    row.status = FitStatus::Fitted;
+    row.json = json.string();
+    for (const MetricReport& m : r.record.metrics) row.metrics.emplace_back(m.id, m.value);
+    row.seconds = r.record.seconds;
+    row.iterations = r.record.iterations;
+    row.converged = r.record.converged;
+  }
+
+  // The published fit of this material under the fitting metric, once per material.
+  void compare(const BatchInput& in, Material& mat) {
+    std::lock_guard lock(mat.mu);
+    if (mat.published_done) return;
+    mat.published_done = true;
+    if (!published_names_.count(in.material)) return;
+    try {
+      load_locked(in, mat);
+      const auto it = mat.metrics.find(metric_);
+      if (it == mat.metrics.end()) return;
+      const Brdf b = published_->brdf(in.material);
+      const double v = it->second->value(b.model(), b.values());
+      if (std::isfinite(v)) mat.published = v;
+    } catch (const std::exception&) {
+      // The material's own rows already say why its data cannot be read.
+    }
+  }
+
+  const std::vector<BatchInput>& inputs_;
+  const std::vector<const Model*>& models_;
+  const fs::path out_;
+  const BatchOptions& opt_;
+  std::string metric_;
+  std::vector<std::string> report_;
+  std::vector<Material> materials_;
+  std::vector<BatchRow> rows_;
+  std::optional<PublishedFits> published_;
+  std::set<std::string> published_names_;
+  std::mutex log_mu_;
+  std::atomic<size_t> done_{0};
+};
+
+}  // namespace
+
+BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
+                           const fs::path& out_dir, const BatchOptions& opt) {
+  validate(opt.job);
+  for (const std::string& id : opt.report) parse_metric_list(id);
+  if (opt.jobs < 1) throw InputError("--jobs", "must be >= 1");
+  if (models.empty()) throw InputError("--models", "no model to fit");
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir)) throw InputError(out_dir.string(), "cannot create the output folder");
+  for (const BatchInput& in : inputs) remove_stale_temporaries(out_dir / in.material);
+  remove_stale_temporaries(out_dir);
+  Batch batch(inputs, models, out_dir, opt);
+  return batch.run();
+}
+
+}  // namespace brdfkit::fit

@@ -1,0 +1,42 @@
+#pragma once
+// `fit-all`: every material × model fitted, saved and summarized, resumable. Each fit is saved
+// atomically as OUTDIR/<material>/<model>.json the moment it ends, so a killed batch loses at
+// most the fits in flight; a rerun keeps every saved fit whose data SHA-256, model, version and
+// options match (fit_job_matches) and refits the rest. A failed fit (unreadable file, data the
+// metric cannot answer, solver failure) becomes a row with its reason; the batch goes on.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "brdfkit/fit/batch/batch_summary.h"
+#include "brdfkit/fit/fit_job.h"
+#include "brdfkit/models/model.h"
+
+namespace brdfkit::fit {
+
+struct BatchInput {
+  std::string material;  // the file's stem: MERL files are named after their material
+  std::filesystem::path file;
+};
+
+// Arguments → inputs: a folder gives every file with a measured extension (load.h) in it, sorted
+// by name; a file is taken as given (a missing one fails its fits, not the batch). InputError when
+// nothing is left or two inputs share a material name.
+std::vector<BatchInput> list_batch_inputs(const std::vector<std::string>& args);
+
+struct BatchOptions {
+  FitJobOptions job;
+  std::vector<std::string> report;  // metrics in every row and JSON; the fitting metric is added first
+  int jobs = 1;                     // fits run at once (each fit is itself parallel)
+  std::string compare;              // a published-fits file (DESIGN.md §10), or empty
+  std::function<void(std::string_view)> log;  // one line per finished fit, and the final count
+};
+
+// Runs the batch into `out_dir` and writes summary.csv and table.txt there. InputError for bad
+// options or an unreadable --compare file (before any fit starts).
+BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
+                           const std::filesystem::path& out_dir, const BatchOptions& opt);
+
+}  // namespace brdfkit::fit

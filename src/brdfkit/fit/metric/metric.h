@@ -1,0 +1,106 @@
+#pragma once
+// A metric = a sample domain (metric_grid.h) + a residual (DESIGN.md §7). The same object gives
+// the solver its residual vector and reports give one number:
+//   r(k, c) = s · √w_k · (T(f_k ρ_c) − T(f_k m_c)),   value = post(Σ_k,c r²)
+// with w the quadrature weight, f the cosθi factor or 1, T the identity or ln(1 + ·) (seed 003
+// Eq. 31–32), s a global scale (normalizations) and post = √ or the identity (seed 003 Eq. 33
+// is a sum of squares).
+#include <cmath>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/fit/metric/metric_grid.h"
+#include "brdfkit/measured/measured_brdf.h"
+#include "brdfkit/models/model.h"
+
+namespace brdfkit::fit {
+
+enum class Transform { Identity, Log1p };
+
+// The data answer nothing in a metric's domain (scattered samples, empty tables) or have no
+// albedo to normalize by: a property of the data, so reports show "n/a" for that metric.
+class MetricUndefined : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// Where a metric samples a MERL table: its own cells (metric_cells.h: values exact at the cell
+// centres, the metric's weights carried over), or the paper's (θi, θo, Δφ) grid looked up in the
+// nearest cell. Scattered data (metric_samples.h) always use their own samples, other data the grid.
+enum class MetricDomain { Auto, Grid };
+
+struct MetricOptions {
+  // Widens every grid step by this integer factor (1 = the paper's grid; on MERL cells: one cell
+  // per k × k × k block of indices). Only for tests and quick looks where the paper's grid is
+  // not the point (DESIGN.md §7 warns against fitting on coarser grids).
+  int coarsen = 1;
+  MetricDomain domain = MetricDomain::Auto;  // Auto: a MERL table's cells where the metric has them
+};
+
+class Metric {
+ public:
+  std::string_view id() const { return id_; }
+  Transform transform() const { return transform_; }
+  bool takes_sqrt() const { return sqrt_; }
+  double scale() const { return scale_; }
+  // The normalizing albedo (max measured albedo over θi ≤ 80°) or 1 where the metric has none.
+  double albedo_norm() const { return albedo_norm_; }
+  size_t chunk_count() const { return cached() ? chunks_.size() : grid_.theta_i.size(); }
+  // Chunk i: the cached one, or built into `scratch` for metrics too large to keep (hp-rmse).
+  const MetricChunk& chunk(size_t i, MetricChunk& scratch) const;
+  bool cached() const { return !chunks_.empty(); }
+  // Valid samples over all chunks (cached metrics only; 0 otherwise).
+  size_t sample_count() const;
+  // Whether the domain is a MERL table's cells ("cells") or the paper's grid ("grid").
+  bool on_cells() const { return on_cells_; }
+  // Whether the domain is scattered data's own samples (metric_samples.h).
+  bool on_samples() const { return on_samples_; }
+  // The cells domain folds both orientations of a cell into one sample (metric_cells.h), which
+  // is exact only for reciprocal models: value() and fit_model() refuse the others (InputError).
+  bool needs_reciprocal_model() const { return folded_; }
+  void check_model(const Model& model) const;
+
+  // The metric's value for a model with parameter values (parallel, deterministic order).
+  double value(const Model& model, const ParamValues& values) const;
+
+  // Post-processing of a pooled sum of squared residuals into the reported number.
+  double finish(double sum_sq) const;
+
+ private:
+  friend Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt);
+  std::string id_;
+  GridSpec grid_;
+  Transform transform_ = Transform::Identity;
+  bool sqrt_ = true;
+  double scale_ = 1.0;
+  double albedo_norm_ = 1.0;
+  std::vector<MetricChunk> chunks_;
+  bool on_cells_ = false;
+  bool on_samples_ = false;
+  bool folded_ = false;
+  const MeasuredBrdf* data_ = nullptr;  // for chunks built on demand; must outlive the metric
+};
+
+// Known metric ids in a stable order: ngan, bagher, low-e1, low-e2, hp-rmse.
+std::span<const std::string_view> metric_ids();
+// Builds a metric over `data` (which must outlive it); throws InputError for unknown ids or data
+// without the reflectance the metric needs.
+Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt = {});
+
+// Applies T to a value: identity, or ln(1 + x) guarded for x ≤ −1 (noise below −1 is clamped
+// to −1 + 1e-12 so the logarithm stays finite).
+inline double apply_transform(Transform t, double x) {
+  if (t == Transform::Identity) return x;
+  return std::log1p(x > -1.0 + 1e-12 ? x : -1.0 + 1e-12);
+}
+// T′(x): 1, or 1/(1 + x) — 0 where apply_transform clamps.
+inline double transform_slope(Transform t, double x) {
+  if (t == Transform::Identity) return 1.0;
+  return x > -1.0 + 1e-12 ? 1.0 / (1.0 + x) : 0.0;
+}
+
+}  // namespace brdfkit::fit

@@ -1,0 +1,109 @@
+// Issue #4 acceptance: "The published parameter sets in ../shared/data/published-fits/ for the
+// Bagher SGD and Löw models load into these models with the conventions each file states, and
+// tabulated into MERL files give finite, non-negative BRDFs for all 100 materials."
+//
+// Full-size tables of every material of every file (7 × 100 × 1 458 000 cells) are too slow for
+// CI, so every material of every supported file is evaluated on a sparse but systematic subset
+// of the MERL cells, at the cell centres the writer uses (merl::cell_directions): θh indices
+// packed towards 0 (the peaks of sharp lobes) up to 89, θd every 6th index plus 85…89 (grazing),
+// φd at 0, 1, 45, 89, 90, 135, 178, 179 — 2 880 cells, the grazing ones included. Then a
+// full-size table (merl::tabulate) of the sharpest material (chrome) for every supported file
+// (a rough one, pink-felt, is tabulated full-size through the CLI in test_tabulate_eval_cli.cpp) must have every cell above the horizon valid (finite and non-negative: tabulate refuses
+// non-finite values and stores negative ones as "not measured"). A file that is not supported yet
+// (low2012-microfacet-E2 until the Löw microfacet model lands) is skipped with a printed reason
+// and included automatically once PublishedFits::supported() is true.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "brdfkit/measured/merl.h"
+#include "brdfkit/measured/merl_tabulate.h"
+#include "brdfkit/models/published_fits.h"
+#include "support/test_util.h"
+
+namespace brdfkit {
+namespace {
+
+std::filesystem::path fits_dir() { return test::data_dir() / "published-fits"; }
+
+std::vector<merl::Cell> sparse_cells() {
+  const int th[] = {0, 1, 2, 3, 4, 6, 9, 13, 18, 24, 31, 39, 48, 58, 69, 79, 85, 89};
+  std::vector<int> td;
+  for (int i = 0; i < 85; i += 6) td.push_back(i);
+  for (int i = 85; i < 90; ++i) td.push_back(i);
+  const int pd[] = {0, 1, 45, 89, 90, 135, 178, 179};
+  std::vector<merl::Cell> cells;
+  for (int a : th)
+    for (int b : td)
+      for (int c : pd) cells.push_back({a, b, c});
+  return cells;
+}
+
+size_t cells_above_horizon() {
+  size_t n = 0;
+  for (size_t k = 0; k < merl::kCellCount; ++k) {
+    Vec3d wi, wo;
+    n += merl::cell_directions(merl::cell_at(k), wi, wo);
+  }
+  return n;
+}
+
+TEST(PublishedTabulation, EveryMaterialOfEverySupportedFileIsFiniteAndNonNegative) {
+  BRDFKIT_REQUIRE_DATA("published-fits");
+  const auto cells = sparse_cells();
+  int files = 0;
+  for (const auto& file : published_fit_files(fits_dir())) {
+    const PublishedFits fits = PublishedFits::read(file);
+    if (!fits.supported()) {
+      std::printf("%s: skipped, %s\n", fits.stem().c_str(), fits.unsupported_reason().c_str());
+      continue;
+    }
+    ++files;
+    size_t evaluated = 0, bad = 0;
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    const auto materials = fits.materials();
+    EXPECT_EQ(materials.size(), 100u) << fits.stem();
+    for (const auto& mat : materials) {
+      const Brdf b = fits.brdf(mat);
+      for (const auto& c : cells) {
+        Vec3d wi, wo;
+        if (!merl::cell_directions(c, wi, wo)) continue;
+        const Rgb v = b.eval(wi, wo);
+        ++evaluated;
+        if (!(v.allFinite() && (v.array() >= 0).all())) {
+          if (++bad <= 5)
+            ADD_FAILURE() << fits.stem() << " " << mat << " cell (" << c.theta_h << ", " << c.theta_d << ", "
+                          << c.phi_d << "): " << v.transpose();
+          continue;
+        }
+        lo = std::min(lo, v.minCoeff());
+        hi = std::max(hi, v.maxCoeff());
+      }
+    }
+    EXPECT_EQ(bad, 0u) << fits.stem();
+    std::printf("%s -> %s: %zu materials x %zu cells evaluated, %zu not finite or negative, rho in [%.3g, %.4g]\n",
+                fits.stem().c_str(), fits.model_name().c_str(), materials.size(), evaluated / materials.size(), bad,
+                lo, hi);
+  }
+  EXPECT_GE(files, 6);  // bagher2012-sgd, low2012 smooth, 2 × Ashikhmin-Shirley, 2 × Cook-Torrance
+}
+
+TEST(PublishedTabulation, FullSizeTableOfTheSharpestMaterial) {
+  BRDFKIT_REQUIRE_DATA("published-fits");
+  const size_t above = cells_above_horizon();
+  for (const auto& file : published_fit_files(fits_dir())) {
+    const PublishedFits fits = PublishedFits::read(file);
+    if (!fits.supported()) continue;
+    for (const char* mat : {"chrome"}) {
+      const Brdf b = fits.brdf(mat);
+      const merl::Table t = merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return b.eval(wi, wo); });
+      EXPECT_EQ(t.valid_count(), above) << fits.stem() << " " << mat << ": cells negative (stored as not measured)";
+      std::printf("%s %s: %zu of %zu cells valid\n", fits.stem().c_str(), mat, t.valid_count(), above);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace brdfkit

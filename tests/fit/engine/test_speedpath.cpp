@@ -1,0 +1,228 @@
+// The fast path of the full-size MERL fit (issue #5 speed criterion, DESIGN.md §12) changes no
+// number: each shortcut is checked to the bit against the plain computation it replaces.
+//   - Model::eval_batch_pair (one pass for a Fresnel-paired colour's two bases) equals two
+//     eval_batch calls, for every parameter of every registered model;
+//   - Cook-Torrance/Beckmann's batch loops skip Λ where G1 = 1 to the last bit (SmithUnitBelow,
+//     models/cook_torrance.h): equal to eval<double> at every pair, across the cut-off;
+//   - the cell domain's directions (fit/metric_cells.cpp, sines and cosines once per axis) equal
+//     merl::cell_directions of every cell;
+//   - a fit through the paired pass gives the same parameters, to the bit, as one through two
+//     plain passes (the evaluation cache of fit/variable_projection.cpp included).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "support/merl_cases.h"
+#include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/fit/metric/metric_cells.h"
+#include "brdfkit/fit/metric/metric_definition.h"
+#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/measured/merl.h"
+#include "brdfkit/measured/merl_brdf.h"
+#include "brdfkit/models/cook_torrance_catalogue.h"
+#include "brdfkit/models/model.h"
+
+namespace brdfkit {
+namespace {
+
+// Direction pairs above the horizon with θ from 0 to 89.5° on both sides (SoA), seeded.
+struct Pairs {
+  std::vector<double> v[6];
+  SoaPairs soa() const { return {v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()}; }
+  size_t size() const { return v[0].size(); }
+  void add(const Vec3d& wi, const Vec3d& wo) {
+    for (int a = 0; a < 3; ++a) {
+      v[a].push_back(wi[a]);
+      v[3 + a].push_back(wo[a]);
+    }
+  }
+};
+
+Pairs random_pairs(size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  Pairs p;
+  for (size_t k = 0; k < n; ++k) {
+    const double ti = std::acos(1 - u(rng) * (1 - std::cos(1.562))), to = std::acos(1 - u(rng) * (1 - std::cos(1.562)));
+    p.add(spherical_direction(ti, 0.0), spherical_direction(to, 2 * kPi * u(rng)));
+  }
+  return p;
+}
+
+bool same_bits(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+TEST(SpeedPath, PairEvaluationEqualsTwoBatchCalls) {
+  const Pairs pairs = random_pairs(400, 3);
+  int custom = 0, checked = 0;
+  for (const Model* m : all_models()) {
+    const ParamTable& t = m->params();
+    const ParamValues v = ParamValues::defaults(t);
+    for (size_t p = 0; p < t.size(); ++p) {
+      if (!std::isfinite(t[p].lower) || !std::isfinite(t[p].upper)) continue;
+      const double a = t[p].lower, b = 0.3 * t[p].lower + 0.7 * t[p].upper;
+      for (int c = 0; c < 3; ++c) {
+        std::vector<double> pa = v.values[size_t(c)], pb = pa;
+        pa[p] = a;
+        pb[p] = b;
+        std::vector<double> want_a(pairs.size()), want_b(pairs.size()), got_a(pairs.size()), got_b(pairs.size());
+        m->eval_batch(pa.data(), c, pairs.size(), pairs.soa(), want_a.data());
+        m->eval_batch(pb.data(), c, pairs.size(), pairs.soa(), want_b.data());
+        m->eval_batch_pair(v.channel(c), c, int(p), a, b, pairs.size(), pairs.soa(), got_a.data(), got_b.data());
+        for (size_t k = 0; k < pairs.size(); ++k) {
+          ASSERT_TRUE(same_bits(got_a[k], want_a[k])) << m->name() << " " << t[p].name << " pair " << k;
+          ASSERT_TRUE(same_bits(got_b[k], want_b[k])) << m->name() << " " << t[p].name << " pair " << k;
+        }
+        ++checked;
+      }
+      if (t[p].name == "F0" && m->name().starts_with("cook-torrance")) ++custom;
+    }
+  }
+  std::printf("eval_batch_pair: %d (model, parameter, channel) cases bit-equal; %d Cook-Torrance F0 parameters\n",
+              checked, custom);
+  EXPECT_GE(custom, 11);  // every registered Cook-Torrance model has a Schlick F0
+}
+
+// Pairs with θi or θo just inside and outside tanθ = 1/(6.5 α), and random ones.
+TEST(SpeedPath, BeckmannBatchLoopsEqualEvalAcrossTheMaskingCutoff) {
+  using M = CookTorranceBeckmann;
+  const ModelAdapter<M> model;
+  const ParamTable t = M::params();
+  int skipped_side = 0, total = 0;
+  for (double alpha : {1e-3, 0.01, 0.05, 0.12, 0.3, 0.9, 2.0}) {
+    Pairs pairs = random_pairs(300, 5);
+    const double cut = std::atan(1.0 / (6.5 * alpha));
+    for (double rel : {1 - 1e-6, 1 - 1e-12, 1.0, 1 + 1e-12, 1 + 1e-6})
+      for (double other : {0.1, 0.7, 1.3}) {
+        pairs.add(spherical_direction(cut * rel, 0.0), spherical_direction(other, 2.0));
+        pairs.add(spherical_direction(other, 0.5), spherical_direction(cut * rel, 2.5));
+      }
+    ParamValues v = ParamValues::defaults(t);
+    v.set(t, "alpha", alpha);
+    v.set(t, "kd", 0.1);
+    v.set(t, "ks", 0.8);
+    const double* p = v.channel(0);
+    std::vector<double> batch(pairs.size()), pa(pairs.size()), pb(pairs.size());
+    M::eval_batch(p, 0, pairs.size(), pairs.v[0].data(), pairs.v[1].data(), pairs.v[2].data(), pairs.v[3].data(),
+                  pairs.v[4].data(), pairs.v[5].data(), batch.data());
+    const int f0 = find_param(t, "F0");
+    model.eval_batch_pair(p, 0, f0, 0.0, 1.0, pairs.size(), pairs.soa(), pa.data(), pb.data());
+    std::vector<double> q0(p, p + t.size()), q1 = q0;
+    q0[size_t(f0)] = 0.0;
+    q1[size_t(f0)] = 1.0;
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const Vec3d wi(pairs.v[0][k], pairs.v[1][k], pairs.v[2][k]), wo(pairs.v[3][k], pairs.v[4][k], pairs.v[5][k]);
+      ASSERT_TRUE(same_bits(batch[k], M::eval<double>(p, 0, wi, wo))) << "alpha " << alpha << " pair " << k;
+      ASSERT_TRUE(same_bits(pa[k], M::eval<double>(q0.data(), 0, wi, wo))) << "alpha " << alpha << " pair " << k;
+      ASSERT_TRUE(same_bits(pb[k], M::eval<double>(q1.data(), 0, wi, wo))) << "alpha " << alpha << " pair " << k;
+      const double tan_i = std::sqrt(1 - wi.z() * wi.z()) / wi.z();
+      skipped_side += tan_i < 1.0 / (6.5 * alpha);
+      ++total;
+    }
+  }
+  std::printf("Beckmann batch loops: %d pairs bit-equal to eval<double>, %d with G1(i) taken as 1 by the cut-off\n",
+              total, skipped_side);
+  EXPECT_GT(skipped_side, 0);
+  EXPECT_LT(skipped_side, total);
+}
+
+// Every sample of the cell domain, in its order, against merl::cell_directions of its cell.
+void check_cell_domain(int coarsen, bool fold) {
+  merl::Table table;
+  for (size_t off = 0; off < merl::kCellCount; ++off) table.set_raw(off, 1.0, 2.0, 3.0);
+  fit::CellWeighting w = fit::ngan_metric(coarsen).cells;
+  w.fold = fold;
+  const fit::CellDomain d = fit::build_cell_domain(table, w, coarsen);
+  const int k = coarsen, nh = merl::kResThetaH / k, nd = merl::kResThetaD / k, np = merl::kResPhiD / k;
+  const int blocks_d = (nd + 14) / 15;
+  ASSERT_EQ(d.chunks.size(), size_t(nh * blocks_d));
+  size_t samples = 0;
+  for (size_t i = 0; i < d.chunks.size(); ++i) {
+    const fit::MetricChunk& ch = d.chunks[i];
+    const int bh = int(i) / blocks_d, bd0 = int(i) % blocks_d * 15;
+    size_t s = 0;
+    auto expect = [&](const Vec3d& wi, const Vec3d& wo) {
+      ASSERT_LT(s, ch.size());
+      const double got[6] = {ch.wi_x[s], ch.wi_y[s], ch.wi_z[s], ch.wo_x[s], ch.wo_y[s], ch.wo_z[s]};
+      const double want[6] = {wi.x(), wi.y(), wi.z(), wo.x(), wo.y(), wo.z()};
+      for (int a = 0; a < 6; ++a) ASSERT_EQ(got[a], want[a]) << "chunk " << i << " sample " << s << " coordinate " << a;
+      ++s;
+    };
+    for (int bd = bd0; bd < std::min(nd, bd0 + 15); ++bd)
+      for (int bp = 0; bp < np; ++bp) {
+        Vec3d wi, wo;
+        if (!merl::cell_directions({bh * k + k / 2, bd * k + k / 2, bp * k + k / 2}, wi, wo)) continue;
+        const double mu_io = w.density(wi, wo), mu_oi = w.density(wo, wi);
+        if (!(mu_io > 0 || mu_oi > 0)) continue;
+        if (fold) {
+          expect(wi, wo);
+        } else {
+          if (mu_io > 0) expect(wi, wo);
+          if (mu_oi > 0) expect(wo, wi);
+        }
+      }
+    ASSERT_EQ(s, ch.size()) << "chunk " << i;
+    samples += s;
+  }
+  std::printf("cell domain (coarsen %d, %s): %zu samples bit-equal to merl::cell_directions\n", coarsen,
+              fold ? "folded" : "both orientations", samples);
+}
+
+TEST(SpeedPath, CellDomainDirectionsAreMerlCellCentres) {
+  check_cell_domain(1, true);
+  check_cell_domain(3, false);
+}
+
+// The runtime model with its eval_batch_pair hidden: variable projection then makes two plain
+// eval_batch passes for a Fresnel pair (Model's default).
+class WithoutPairPass final : public Model {
+ public:
+  explicit WithoutPairPass(const Model& m) : m_(m) {}
+  std::string_view name() const override { return m_.name(); }
+  std::string_view description() const override { return m_.description(); }
+  const ParamTable& params() const override { return m_.params(); }
+  bool reciprocal() const override { return m_.reciprocal(); }
+  double eval(const double* p, int c, const Vec3d& wi, const Vec3d& wo) const override { return m_.eval(p, c, wi, wo); }
+  void eval_batch(const double* p, int c, std::size_t n, const SoaPairs& d, double* out) const override {
+    m_.eval_batch(p, c, n, d, out);
+  }
+  std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
+    return m_.sample(p, c, wo, u, u_lobe);
+  }
+  double pdf(const double* p, int c, const Vec3d& wo, const Vec3d& wi) const override { return m_.pdf(p, c, wo, wi); }
+
+ private:
+  const Model& m_;
+};
+
+TEST(SpeedPath, FitThroughPairedPassIsBitIdentical) {
+  const Model& m = model_by_name("cook-torrance-beckmann");
+  const ParamValues truth = test::with(m, {{"kd", Rgb(0.12, 0.08, 0.05)},
+                                           {"ks", Rgb(0.9, 0.7, 0.6)},
+                                           {"alpha", Rgb::Constant(0.12)},
+                                           {"F0", Rgb(0.05, 0.3, 0.08)}});
+  const MerlBrdf data(test::tabulate_cells(m, truth, 3), "speedpath.binary");
+  const fit::Metric metric = fit::make_metric("ngan", data, {3});
+  const fit::FitResult fast = fit::fit_model(m, metric, {});
+  const WithoutPairPass plain_model(m);
+  const fit::FitResult plain = fit::fit_model(plain_model, metric, {});
+  EXPECT_EQ(fast.iterations, plain.iterations);
+  EXPECT_EQ(fast.metric_value, plain.metric_value);
+  double worst = 0;
+  for (int c = 0; c < 3; ++c)
+    for (size_t p = 0; p < m.params().size(); ++p) {
+      EXPECT_EQ(fast.values.values[size_t(c)][p], plain.values.values[size_t(c)][p]) << m.params()[p].name << " " << c;
+      const double want = truth.values[size_t(c)][p];
+      worst = std::max(worst, std::abs(fast.values.values[size_t(c)][p] - want) / std::abs(want));
+    }
+  std::printf("paired vs plain fit: bit-identical; worst relative error vs truth %.3g (%d iterations)\n", worst,
+              fast.iterations);
+  EXPECT_LT(worst, 1e-9);
+}
+
+}  // namespace
+}  // namespace brdfkit

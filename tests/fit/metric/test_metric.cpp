@@ -1,0 +1,108 @@
+// Metric values against closed forms / independent sums for a constant difference of two
+// Lambertian materials (ρ − m = Δkd/π everywhere), on each paper's grid.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/models/lambert.h"
+#include "support/fit_test_util.h"
+
+namespace brdfkit::fit {
+namespace {
+
+using test::AnalyticMeasured;
+using test::make_values;
+
+constexpr double kDeg = kPi / 180;
+
+struct LambertPair {
+  const Model& model = model_by_name("lambert");
+  ParamValues measured = make_values(model, {{"kd", Rgb::Constant(0.5)}});
+  ParamValues fitted = make_values(model, {{"kd", Rgb::Constant(0.3)}});
+  double d = 0.2 / kPi;  // |ρ − m|
+};
+
+// ngan (seed 002 Eq. 1) with w = sinθi sinθo: the θo and Δφ sums cancel, leaving
+// d · sqrt(∫ sin cos² / ∫ sin) over θi ∈ [0, 80°] = d · sqrt((1 − cos³80°) / (3 (1 − cos80°))),
+// divided by the max albedo 0.5 of the measured Lambertian.
+TEST(Metric, NganOfAConstantDifferenceIsClosedForm) {
+  LambertPair p;
+  const AnalyticMeasured data(p.model, p.measured);
+  const Metric m = make_metric("ngan", data);
+  EXPECT_EQ(m.sample_count(), size_t(80 * 80 * 180));
+  // Midpoint rule over 1° cells of ∫ (0.5/π) cosθo dωo = 0.5 Σ sin 2θo Δθ (≈ 0.5 (1 + 5.1e-5)).
+  double albedo = 0;
+  for (int b = 0; b < 90; ++b) albedo += 0.5 * std::sin(2 * (b + 0.5) * kDeg) * kDeg;
+  EXPECT_NEAR(m.albedo_norm(), albedo, 1e-12);
+  EXPECT_NEAR(albedo, 0.5, 0.5 * 6e-5);
+  const double c = std::cos(80 * kDeg);
+  const double expected = p.d * std::sqrt((1 - c * c * c) / (3 * (1 - c))) / albedo;
+  const double got = m.value(p.model, p.fitted);
+  EXPECT_NEAR(got, expected, expected * 1e-4) << got << " vs " << expected;
+  EXPECT_EQ(m.value(p.model, p.measured), 0.0);
+}
+
+// The same through a MERL-format table (constant: the look-up is exact).
+TEST(Metric, NganOnATabulatedMerlTableMatchesTheAnalyticData) {
+  LambertPair p;
+  const MerlBrdf merl(test::tabulate_model(p.model, p.measured), "lambert.binary");
+  const AnalyticMeasured analytic(p.model, p.measured);
+  // The grid looked up in the nearest cell: a constant difference is the same at every point.
+  const double a = make_metric("ngan", merl, {2, MetricDomain::Grid}).value(p.model, p.fitted);
+  const double b = make_metric("ngan", analytic, {2}).value(p.model, p.fitted);
+  EXPECT_NEAR(a, b, 1e-12 * b);
+}
+
+// bagher (seed 000 §6.3): d · (∫∫ cosθi cosθo dωi dωo)^½ = d π, over the max albedo.
+TEST(Metric, BagherOfAConstantDifferenceIsClosedForm) {
+  LambertPair p;
+  const AnalyticMeasured data(p.model, p.measured);
+  const Metric m = make_metric("bagher", data);
+  const double expected = p.d * kPi / 0.5;
+  EXPECT_NEAR(m.albedo_norm(), 0.5, 0.5 * 6e-5);
+  EXPECT_NEAR(m.value(p.model, p.fitted), expected, expected * 1e-4);
+}
+
+// low-e1/e2 (seed 003 Eq. 29–33): Σ over θi = 0…80° (10°), θo = 0…80° and φo = 0…359° (1°)
+// of (g − ĝ)² sinθo Δφ Δθo Δθi, channels summed; computed here as the nested sum.
+TEST(Metric, LowE1AndE2MatchTheirSums) {
+  LambertPair p;
+  const AnalyticMeasured data(p.model, p.measured);
+  double so = 0;
+  for (int o = 0; o <= 80; ++o) so += std::sin(o * kDeg) * kDeg;
+  double e1 = 0, e2 = 0;
+  for (int i = 0; i <= 80; i += 10) {
+    const double ci = std::cos(i * kDeg);
+    e1 += std::pow(ci * p.d, 2) * 10 * kDeg;
+    e2 += std::pow(std::log1p(ci * 0.5 / kPi) - std::log1p(ci * 0.3 / kPi), 2) * 10 * kDeg;
+  }
+  e1 *= 3 * so * 360 * kDeg;
+  e2 *= 3 * so * 360 * kDeg;
+  EXPECT_NEAR(make_metric("low-e1", data).value(p.model, p.fitted), e1, e1 * 1e-12);
+  EXPECT_NEAR(make_metric("low-e2", data).value(p.model, p.fitted), e2, e2 * 1e-12);
+}
+
+// hp-rmse (seed 004 Eq. 31), on a grid coarsened 4× (θi every 4°, θo and φo every 1°).
+TEST(Metric, HpRmseMatchesItsSum) {
+  LambertPair p;
+  const AnalyticMeasured data(p.model, p.measured);
+  double so = 0, si = 0;
+  for (int o = 0; o <= 80; ++o) so += std::sin(o * kDeg) * kDeg;
+  for (int i = 0; i <= 80; i += 4) si += std::pow(std::cos(i * kDeg), 2) * 4 * kDeg;
+  const double expected = p.d * std::sqrt(si * so * 360 * kDeg);
+  EXPECT_NEAR(make_metric("hp-rmse", data, {4}).value(p.model, p.fitted), expected, expected * 1e-12);
+}
+
+TEST(Metric, UnknownIdAndEmptyDomainAreInputErrors) {
+  LambertPair p;
+  const AnalyticMeasured data(p.model, p.measured);
+  EXPECT_THROW(make_metric("rmse", data), InputError);
+  EXPECT_THROW(make_metric("ngan", data, {0}), InputError);
+  // A table with no measured cell: nothing to compare.
+  const MerlBrdf empty(merl::Table(), "empty.binary");
+  EXPECT_THROW(make_metric("ngan", empty, {4}), MetricUndefined);
+}
+
+}  // namespace
+}  // namespace brdfkit::fit
