@@ -22,7 +22,7 @@
 #include <filesystem>
 
 #include "brdfkit/fit/metric/metric.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"

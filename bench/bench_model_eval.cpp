@@ -19,6 +19,7 @@
 #include "brdfkit/core/half_diff.h"
 #include "brdfkit/measured/sample_set.h"
 #include "brdfkit/models/cook_torrance_catalogue.h"
+#include "brdfkit/models/model.h"
 
 using namespace brdfkit;
 

@@ -100,11 +100,12 @@ int main(int argc, char** argv) {
       const Brdf published = smooth.brdf(material);
       const fit::Metric e2 = fit::make_metric("low-e2", data, {coarsen});
       const double e2_published = e2.value(published.model(), published.values());
-      fit::ProcedureOptions opt;
+      fit::FitSettings opt;
+      opt.procedure = "low-e2";
       opt.starts = starts;
       opt.coarsen = coarsen;
       const auto t0 = std::chrono::steady_clock::now();
-      const fit::ProcedureResult lr = fit::run_procedure("low-e2", low, data, opt);
+      const fit::ProcedureResult lr = fit::run_procedure(low, data, opt);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double c2 = cpu_seconds();
       const bool e2_ok = lr.fit.metric_value <= e2_published;
@@ -112,12 +113,13 @@ int main(int argc, char** argv) {
       // channels; F0 and F1 relative to max(|F0|, |F1|): they enter F = F0 + (1 − F0)(1 − cosθd)⁵ −
       // F1 cosθd together, and a published F0 may be ~0, e.g. chrome's blue 3.2e-13 next to F1 = −1,
       // where 1e-16 of round-off is a relative error of 4e-4).
-      fit::ProcedureOptions bopt;
+      fit::FitSettings bopt;
+      bopt.procedure = "bagher";
       bopt.coarsen = 8;  // the reported bagher metric only
       // From one start the θd = 0 slice fit of cherry-235's red channel (p 0.036) ended at
       // p ≈ 1.9, α ≈ 0.16, and white-paint's wide blue lobe (α 0.54) was off by 24 %.
       bopt.starts = bagher_starts;
-      const fit::ProcedureResult br = fit::run_procedure("bagher", truth.model(), data, bopt);
+      const fit::ProcedureResult br = fit::run_procedure(truth.model(), data, bopt);
       std::array<double, 6> err{};
       const char* names[] = {"kd", "ks", "alpha", "p", "F0", "F1"};
       for (size_t k = 0; k < 6; ++k)

@@ -3,6 +3,7 @@
 // and Eq. 10, seed 004 §4.2) and the tabulated-NDF estimation of seed 002 §5.1 (item 3). JSON and
 // CSV are for plotting; -o writes atomically (JSON, or CSV with --csv).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <fstream>
 #include <iostream>
@@ -20,7 +21,7 @@
 #include "brdfkit/core/file_digest.h"
 #include "brdfkit/fit/fit_record.h"
 #include "brdfkit/fit/metric/metric_report.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
 
@@ -67,7 +68,7 @@ std::pair<const Model*, ParamValues> fitted_model(const AnalyzeArgs& a, const Me
   }
   const Model& m = model_by_name(a.model.empty() ? "cook-torrance-ggx" : a.model);
   const fit::Metric metric = fit::make_metric(a.metric, data, {a.coarsen});
-  const fit::FitResult r = fit::fit_model(m, metric, {a.starts, 1, 100});
+  const fit::FitResult r = fit::fit_model(m, metric, fit::FitSettings{.starts = a.starts});
   how = fmt::format("fitted here under {} (grid coarsen {}): {} = {:.6g}", a.metric, a.coarsen, a.metric, r.metric_value);
   return {&m, r.values};
 }
@@ -271,17 +272,18 @@ Output ndf(const AnalyzeArgs& a, const MeasuredBrdf& data) {
   doc["data"] = {{"file", a.file}, {"sha256", sha256_file(a.file)}};
   doc["grid_coarsen"] = a.coarsen;
   o.text += fit::format_params(*model, values);
-  const auto metrics = fit::report_metrics(data, *model, values, report, {a.coarsen});
+  fit::MetricStore store(data);
+  const auto metrics = fit::report_metrics(store, *model, values, report, {a.coarsen});
   json mj = json::object();
   for (const auto& m : metrics) mj[m.id] = m.value ? json(*m.value) : json(nullptr);
   doc["metrics"] = mj;
   o.text += "metrics\n" + fit::format_metrics(metrics);
-  // Reference fits of catalogue models under the same metric and grid (issue 6 acceptance).
+  // Reference fits of catalogue models under the same metric and grid.
   json cmp = json::object();
   for (const std::string& name : split(a.compare)) {
     const Model& m = model_by_name(name);
     const fit::Metric metric = fit::make_metric(a.metric, data, {a.coarsen});
-    const fit::FitResult r = fit::fit_model(m, metric, {a.starts, 1, 100});
+    const fit::FitResult r = fit::fit_model(m, metric, fit::FitSettings{.starts = a.starts});
     cmp[name] = r.metric_value;
     o.text += fmt::format("compare    {:<28} {} = {:.6g} (fitted here, {} start(s))\n", name, a.metric, r.metric_value, a.starts);
   }
@@ -345,7 +347,8 @@ const CommandRegistration reg("analyze", [](CLI::App& app) {
   sub->add_option("--threshold", a->threshold, "diffraction: |det| threshold (seed 004: 1e-2)")->capture_default_str();
   sub->add_option("--space", a->space, "backscatter: fit space, linear (seed 000 Eq. 12) or log")->capture_default_str();
   sub->add_option("--families", a->families,
-                  "backscatter: comma-separated families (beckmann, ggx, exponential, sgd, exponential-power)");
+                  "backscatter: comma-separated distribution families (default beckmann, ggx, exponential, sgd, "
+                  "exponential-power; known: " + fmt::format("{})", fmt::join(analysis::backscatter_families(), ", ")));
   sub->add_option("--max-theta-h", a->max_theta_h, "backscatter: largest theta_h in degrees")->capture_default_str();
   return [a]() { return run_analyze(*a); };
 });

@@ -45,7 +45,7 @@ nlohmann::json domain_json(const RmseDomain& d) {
 int run_table(const Options& o) {
   const auto& beckmann = ndf_shape("beckmann");
   const std::vector<double> m_Bs = o.values.empty() ? table2_m_B() : o.values;
-  for (double m : m_Bs) check_param(beckmann, m, "--table");
+  for (double m : m_Bs) check_param(beckmann, m, "table");
   std::vector<Table2Row> rows;
   for (double m : m_Bs) rows.push_back(table2_row(m));
   if (o.json) {
@@ -81,7 +81,14 @@ int run_convert(const Options& o) {
   if (o.values.empty()) throw InputError("VALUE", "missing: give the source distribution's parameter value");
   if (o.values.size() > 1) throw InputError("VALUE", "give one value (several m_B values go with --table)");
   const Method method = parse_method(o.method);
-  const Conversion c = convert_ndf(o.from, o.to, o.values[0], method);
+  const Conversion c = [&] {
+    try {
+      return convert_ndf(o.from, o.to, o.values[0], method);
+    } catch (const SettingError& e) {
+      if (e.setting() == "value") throw InputError("VALUE", e.detail());  // the positional argument
+      throw;
+    }
+  }();
   for (const auto& w : c.warnings) std::cerr << "brdfkit: warning: " << w << "\n";
   if (o.json) {
     nlohmann::json out = {

@@ -26,8 +26,8 @@ struct ErrorArgs {
 int run_error(const ErrorArgs& a) {
   const fit::LoadedParams loaded = fit::load_params(a.params, a.material);
   const Model& model = loaded.brdf.model();
-  const std::vector<std::string> ids = fit::parse_metric_list(a.metric);
-  if (a.coarsen < 0) throw InputError("--coarsen", "must be >= 1");
+  const std::vector<std::string> ids = fit::parse_metric_list(a.metric, "metric");
+  if (a.coarsen < 0) throw SettingError("coarsen", "must be >= 1 (0: the saved fit's)");
   const int saved_coarsen = loaded.record ? loaded.record->coarsen : 1;
   const int coarsen = a.coarsen > 0 ? a.coarsen : saved_coarsen;
   const auto data = load_measured(a.file);
@@ -35,7 +35,8 @@ int run_error(const ErrorArgs& a) {
   if (loaded.record && !loaded.record->data_sha256.empty() && loaded.record->data_sha256 != sha)
     std::cerr << fmt::format("brdfkit: warning: {} is not the file this fit was made on (sha256 {} != {})\n", a.file,
                              sha, loaded.record->data_sha256);
-  const auto metrics = fit::report_metrics(*data, model, loaded.brdf.values(), ids, {coarsen});
+  fit::MetricStore store(*data);
+  const auto metrics = fit::report_metrics(store, model, loaded.brdf.values(), ids, {coarsen});
   if (a.json) {
     nlohmann::json out = {{"model", std::string(model.name())}, {"data", {{"file", a.file}, {"sha256", sha}}},
                           {"grid_coarsen", coarsen}, {"metrics", nlohmann::json::object()}};

@@ -12,63 +12,58 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/file_digest.h"
 #include "brdfkit/fit/fit_job.h"
-#include "brdfkit/fit/metric/metric_cache.h"
 #include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/fit/metric/metric_store.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
+#include "fit_options.h"
 
 namespace brdfkit::cli {
 namespace {
 
 struct FitArgs {
-  std::string file, model, procedure, metric, output, report;
-  int starts = 1, max_iterations = 100, coarsen = 1;
-  std::uint64_t seed = 1;
-  bool per_channel_shape = false, json = false, verbose = false;
+  std::string file, model, output, report;
+  fit::FitSettings settings;
+  bool json = false, verbose = false;
 };
 
-int run_fit(const FitArgs& a) {
-  const Model& model = model_by_name(a.model);
-  const std::vector<std::string> report = fit::parse_metric_list(a.report);
-  fit::FitJobOptions opt;
-  opt.procedure = a.procedure;
-  opt.metric = a.metric;
-  opt.per_channel_shape = a.per_channel_shape;
-  opt.starts = a.starts;
-  opt.seed = a.seed;
-  opt.max_iterations = a.max_iterations;
-  opt.coarsen = a.coarsen;
-  if (a.verbose) opt.progress = [](std::string_view line) { std::cerr << line << std::endl; };
-  fit::validate(opt);  // names a bad option before any work
-  const auto data = load_measured(a.file);
-  // The fit and the reports share the metric domains they have in common (ngan, its albedo norm).
-  const fit::MetricCache domains(*data);
-  fit::FitJobResult r;
-  try {
-    r = fit::run_fit_job(model, *data, a.file, sha256_file(a.file), opt);
-  } catch (const fit::FitError& e) {
-    std::cerr << "brdfkit: fit failed: " << e.what() << "\n";
-    return 1;
-  }
-  fit::FitRecord& rec = r.record;
-  rec.metrics = fit::report_metrics(*data, model, rec.values, report, fit::MetricOptions{a.coarsen});
-  const nlohmann::json doc = fit::fit_job_json(r, opt);
-  write_file_atomically(a.output, doc.dump(2) + "\n");
-  if (a.json) {
-    std::cout << doc.dump(2) << "\n";
-    return 0;
-  }
+void print_summary(const fit::FitJobResult& r, const FitArgs& a, const Model& model) {
+  const fit::FitRecord& rec = r.record;
+  const fit::FitSettings& s = a.settings;
   std::cout << fmt::format("model      {}\n", rec.model);
   std::cout << fmt::format("data       {} (sha256 {})\n", rec.data_file, rec.data_sha256);
   std::cout << fmt::format("fit        {}, {} shape, {} start(s) from seed {}, best start {}, {} iterations, {:.3f} s, {}\n",
-                           a.procedure.empty() ? "plain fit under metric " + rec.fit_metric
-                                               : "procedure " + a.procedure + " (metric " + rec.fit_metric + ")",
-                           a.per_channel_shape ? "per-channel" : "shared", a.starts, a.seed, r.fit.best_start,
+                           s.procedure.empty() ? "plain fit under metric " + rec.fit_metric
+                                               : "procedure " + s.procedure + " (metric " + rec.fit_metric + ")",
+                           s.per_channel_shape ? "per-channel" : "shared", s.starts, s.seed, r.fit.best_start,
                            rec.iterations, rec.seconds, rec.converged ? "converged" : "not converged: " + rec.message);
   for (const std::string& step : r.steps) std::cout << fmt::format("  step     {}\n", step);
   std::cout << "parameters\n" << fit::format_params(model, rec.values);
   std::cout << "metrics\n" << fit::format_metrics(rec.metrics);
   std::cout << fmt::format("saved      {}\n", a.output);
+}
+
+int run_fit(const FitArgs& a) {
+  const Model& model = model_by_name(a.model);
+  const std::vector<std::string> report = fit::parse_metric_list(a.report);
+  fit::validate(a.settings);  // names a bad setting before any work
+  const auto data = load_measured(a.file);
+  // The fit and the reports share the metric domains they have in common (ngan, its albedo norm).
+  fit::MetricStore store(*data);
+  fit::Progress progress;
+  if (a.verbose) progress = [](std::string_view line) { std::cerr << line << std::endl; };
+  fit::FitJobResult r;
+  try {
+    r = fit::run_fit_job(model, store, a.file, sha256_file(a.file), a.settings, progress);
+  } catch (const fit::FitError& e) {
+    std::cerr << "brdfkit: fit failed: " << e.what() << "\n";
+    return 1;
+  }
+  r.record.metrics = fit::report_metrics(store, model, r.record.values, report, fit::MetricOptions{a.settings.coarsen});
+  const nlohmann::json doc = fit::fit_job_json(r, a.settings);
+  write_file_atomically(a.output, doc.dump(2) + "\n");
+  if (a.json) std::cout << doc.dump(2) << "\n";
+  else print_summary(r, a, model);
   return 0;
 }
 
@@ -77,21 +72,8 @@ const CommandRegistration reg("fit", [](CLI::App& app) {
   auto a = std::make_shared<FitArgs>();
   sub->add_option("FILE", a->file, "Measured BRDF (MERL .binary, RGL .bsdf, ...)")->required();
   sub->add_option("--model,-m", a->model, "Model to fit (see `brdfkit models`)")->required();
-  auto* proc = sub->add_option("--procedure", a->procedure,
-                               "Fitting procedure of the papers: ngan, bagher, low-e1, low-e2, hp-2step, hp-1step "
-                               "(DESIGN.md §8); its metric is the fitting metric");
-  auto* metric = sub->add_option("--metric", a->metric,
-                                 "Plain fit under this metric: ngan (default), bagher, low-e1, low-e2, hp-rmse");
-  proc->excludes(metric);
-  sub->add_flag("--per-channel-shape", a->per_channel_shape,
-                "Fit the lobe shape per channel instead of one shape for R, G, B");
-  sub->add_option("--starts", a->starts, "Number of starts: the defaults, then seeded random ones")->capture_default_str();
-  sub->add_option("--seed", a->seed, "Seed of the random starts")->capture_default_str();
-  sub->add_option("--max-iterations", a->max_iterations, "Solver iterations per start")->capture_default_str();
+  add_fit_settings(*sub, a->settings);
   sub->add_option("--report", a->report, "Comma-separated metrics to report (default: all)");
-  sub->add_option("--coarsen", a->coarsen,
-                  "Widen every metric grid step by this factor (1 = the papers' grids; quick looks only)")
-      ->capture_default_str();
   sub->add_option("-o,--output", a->output, "Where to write the fit (JSON, written atomically)")->required();
   sub->add_flag("--json", a->json, "Print the saved JSON instead of a summary");
   sub->add_flag("--verbose,-v", a->verbose, "Print the procedure's steps on stderr as they run");

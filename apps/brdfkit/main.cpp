@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "brdfkit/core/error.h"
 #include "command.h"
@@ -15,6 +16,12 @@ std::vector<RegisteredCommand>& registered_commands() {
 
 CommandRegistration::CommandRegistration(std::string name, CommandSetup setup) {
   registered_commands().push_back({std::move(name), std::move(setup)});
+}
+
+// A setting's flag: its name with '-' for '_' (fit_options.h binds the flags that way).
+std::string flag_of(std::string setting) {
+  std::replace(setting.begin(), setting.end(), '_', '-');
+  return "--" + setting;
 }
 
 }  // namespace brdfkit::cli
@@ -48,6 +55,9 @@ int main(int argc, char** argv) {
   try {
     for (auto& [sub, run] : runs)
       if (sub->parsed()) return run();
+  } catch (const brdfkit::SettingError& e) {
+    std::cerr << "brdfkit: " << flag_of(e.setting()) << ": " << e.detail() << "\n";
+    return 2;
   } catch (const brdfkit::InputError& e) {
     std::cerr << "brdfkit: " << e.what() << "\n";
     return 2;

@@ -33,7 +33,7 @@ template <template <class> class Ndf> double table_error(int n, uint64_t seed, d
     const double th = 89.9 * kPi / 180 * std::sqrt(u(rng));
     const Ndf<double> ndf(p.data());
     const double t = std::tan(th);
-    const double e = std::abs(1 / (1 + ndf.Lambda(t)) - 1 / (1 + smith_lambda_integral(ndf, t)));
+    const double e = std::abs(1 / (1 + smith_lambda(ndf, t)) - 1 / (1 + smith_lambda_integral(ndf, t)));
     if (e > worst) {
       worst = e;
       worst_p = p;

@@ -48,7 +48,7 @@ TableError table_error(std::vector<double> lo, std::vector<double> hi, std::vect
         direct = smith_lambda_integral(ndf.normalized(), t);
       else
         direct = smith_lambda_integral(ndf, t);
-      const double err = std::abs(1 / (1 + ndf.Lambda(t)) - 1 / (1 + direct));
+      const double err = std::abs(1 / (1 + smith_lambda(ndf, t)) - 1 / (1 + direct));
       if (err > e.worst) {
         e.worst = err;
         e.at = p;
@@ -125,7 +125,7 @@ TEST(SmithTablesAll, LazyBuildTouchesOnlyTheStencil) {
   const SmithLambdaTable& sgd = smith_lambda_table<Sgd>();
   const size_t before = sgd.nodes_built();
   const double p[2] = {0.0123, 0.777};
-  const double l = Sgd<double>(p).Lambda(2.0);
+  const double l = smith_lambda(Sgd<double>(p), 2.0);
   EXPECT_GT(l, 0.0);
   const size_t built = sgd.nodes_built() - before;
   std::printf("SGD table: %zu nodes built for one lookup (grid has %d x %d)\n", built, sgd.axes()[0].n, sgd.axes()[1].n);
@@ -133,7 +133,7 @@ TEST(SmithTablesAll, LazyBuildTouchesOnlyTheStencil) {
   EXPECT_GE(built, 1u);
   // Same parameters again: nothing new.
   const size_t after = sgd.nodes_built();
-  EXPECT_EQ(Sgd<double>(p).Lambda(3.0) > 0, true);
+  EXPECT_EQ(smith_lambda(Sgd<double>(p), 3.0) > 0, true);
   EXPECT_EQ(sgd.nodes_built(), after);
 }
 
@@ -144,7 +144,7 @@ template <template <class> class Ndf> double jet_error(const std::vector<double>
   std::vector<J> pj(n);
   for (size_t k = 0; k < n; ++k) pj[k] = J(p[k], int(k));
   const double t = std::tan(theta);
-  const J l = Ndf<J>(pj.data()).Lambda(J(t, 3));
+  const J l = smith_lambda(Ndf<J>(pj.data()), J(t, 3));
   double worst = 0;
   if (!(l.a > 0)) return 0;  // below a support edge Λ ≡ 0
   for (size_t k = 0; k <= n; ++k) {
@@ -152,7 +152,7 @@ template <template <class> class Ndf> double jet_error(const std::vector<double>
       std::vector<double> q = p;
       double tt = t;
       (k < n ? q[k] : tt) += h;
-      return Ndf<double>(q.data()).Lambda(tt);
+      return smith_lambda(Ndf<double>(q.data()), tt);
     };
     const double x = k < n ? p[k] : t;
     double best = INFINITY;
@@ -164,7 +164,7 @@ template <template <class> class Ndf> double jet_error(const std::vector<double>
     }
     worst = std::max(worst, best);
   }
-  EXPECT_NEAR(l.a, Ndf<double>(p.data()).Lambda(t), 1e-14 * l.a);
+  EXPECT_NEAR(l.a, smith_lambda(Ndf<double>(p.data()), t), 1e-14 * l.a);
   return worst;
 }
 

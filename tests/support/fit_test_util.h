@@ -6,6 +6,7 @@
 #include <functional>
 #include <random>
 
+#include "brdfkit/fit/settings/fit_settings.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/measured/merl_tabulate.h"
 #include "brdfkit/models/model.h"
@@ -71,6 +72,12 @@ inline merl::Table tabulate_model(const Model& m, const ParamValues& v, double m
     }
   }
   return t;
+}
+
+// Settings naming a procedure (fit/procedure/procedure.h).
+inline fit::FitSettings with_procedure(fit::FitSettings s, const std::string& id) {
+  s.procedure = id;
+  return s;
 }
 
 }  // namespace brdfkit::test

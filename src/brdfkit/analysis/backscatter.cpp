@@ -8,11 +8,9 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/measured/alta_slice.h"
-#include "brdfkit/ndf/beckmann.h"
-#include "brdfkit/ndf/exponential.h"
-#include "brdfkit/ndf/exponential_power.h"
-#include "brdfkit/ndf/ggx.h"
-#include "brdfkit/ndf/sgd.h"
+#include "brdfkit/core/registry.h"
+#include "brdfkit/fit/engine/start_scan.h"
+#include "brdfkit/ndf/distributions.h"
 #include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit::analysis {
@@ -54,10 +52,19 @@ struct ChannelFit {
   double cost = INFINITY;
 };
 
+// Every fourth point of the start scan's grid of a parameter (fit/engine/start_scan.h).
+std::vector<double> sparse_grid(const ParamSpec& spec) {
+  const std::vector<double> g = fit::scan_grid(spec);
+  std::vector<double> out;
+  for (size_t k = g.size() / 8; k < g.size(); k += 4) out.push_back(g[k]);
+  return out;
+}
+
 // Starting shapes: a deterministic grid over each parameter's useful range (seeded starts without
-// randomness; every family has at most two shape parameters).
-std::vector<std::vector<double>> shape_starts(const std::string& family) {
-  const std::vector<double> widths = {0.02, 0.07, 0.2, 0.5};  // within every family's bounds
+// randomness). The families of BackscatterOptions' default list have hand-placed grids; any other
+// distribution gets the product of sparse scan grids of its (at most two) parameters.
+std::vector<std::vector<double>> shape_starts(const std::string& family, const ParamTable& table) {
+  const std::vector<double> widths = {0.02, 0.07, 0.2, 0.5};  // within these families' bounds
   std::vector<std::vector<double>> s;
   if (family == "sgd") {
     // α up to its bound 2: wide slices (pink-felt) want the flattest shapes; p up to near 2, the
@@ -67,8 +74,13 @@ std::vector<std::vector<double>> shape_starts(const std::string& family) {
   } else if (family == "exponential-power") {
     for (double a : widths)
       for (double p : {0.5, 1.0, 2.0}) s.push_back({a, p});
-  } else {
+  } else if (family == "beckmann" || family == "ggx" || family == "exponential") {
     for (double a : widths) s.push_back({a});
+  } else {
+    const std::vector<double> first = sparse_grid(table[0]);
+    const std::vector<double> second = table.size() > 1 ? sparse_grid(table[1]) : std::vector<double>{0.0};
+    for (double a : first)
+      for (double b : second) s.push_back(table.size() > 1 ? std::vector<double>{a, b} : std::vector<double>{a});
   }
   return s;
 }
@@ -81,7 +93,7 @@ ChannelFit fit_channel(const BackscatterSlice& s, int c, SliceFitSpace space, co
   const bool log_space = space == SliceFitSpace::Log;
   ChannelFit best;
   std::vector<std::vector<double>> starts;
-  for (const auto& shape : shape_starts(family)) {
+  for (const auto& shape : shape_starts(family, table)) {
     std::vector<double> x = {-1, -1};  // ρd, Fr: from the linear solve below
     x.insert(x.end(), shape.begin(), shape.end());
     starts.push_back(x);
@@ -178,14 +190,9 @@ void fill_fit(const BackscatterSlice& s, SliceFitSpace space, BackscatterFit& f,
 
 }  // namespace
 
-const std::vector<std::string>& backscatter_families() {
-  static const std::vector<std::string> f = {"beckmann", "ggx", "exponential", "sgd", "exponential-power"};
-  return f;
-}
-
 BackscatterSlice backscatter_slice(const MeasuredBrdf& data, const BackscatterOptions& opt) {
   if (!(opt.max_theta_h_deg > 0 && opt.max_theta_h_deg < 90))
-    throw InputError("--max-theta-h", "must be in (0, 90) degrees");
+    throw SettingError("max_theta_h", "must be in (0, 90) degrees");
   if (opt.nodes < 4 || opt.nodes > 100000) throw InputError("back-scattering slice", "nodes must be in [4, 100000]");
   const double max_t = opt.max_theta_h_deg * kPi / 180;
   BackscatterSlice s;
@@ -249,7 +256,27 @@ std::array<std::vector<std::vector<double>>, 3> sgd_seeds(const BackscatterSlice
   return seeds;
 }
 
+using FamilyFit = void (*)(const BackscatterSlice&, SliceFitSpace, BackscatterFit&, const std::vector<BackscatterFit>&);
+
+// Every distribution of ndf/distributions.h is a family.
+const Registry<FamilyFit>& family_registry() {
+  static const Registry<FamilyFit> registry = [] {
+    Registry<FamilyFit> r("distribution family");
+    Distributions::for_each([&]<template <class> class D>() {
+      r.add(std::string(D<double>::kName), [](const BackscatterSlice& slice, SliceFitSpace space, BackscatterFit& f,
+                                              const std::vector<BackscatterFit>& done) {
+        if constexpr (std::is_same_v<D<double>, Sgd<double>>) fill_fit<D>(slice, space, f, sgd_seeds(slice, space, done));
+        else fill_fit<D>(slice, space, f);
+      });
+    });
+    return r;
+  }();
+  return registry;
+}
+
 }  // namespace
+
+const std::vector<std::string>& backscatter_families() { return family_registry().names(); }
 
 BackscatterAnalysis analyze_backscatter(const BackscatterSlice& slice, const BackscatterOptions& opt) {
   BackscatterAnalysis a;
@@ -258,16 +285,7 @@ BackscatterAnalysis analyze_backscatter(const BackscatterSlice& slice, const Bac
   for (const std::string& family : opt.families) {
     BackscatterFit f;
     f.family = family;
-    if (family == "beckmann") fill_fit<Beckmann>(slice, opt.space, f);
-    else if (family == "ggx") fill_fit<Ggx>(slice, opt.space, f);
-    else if (family == "exponential") fill_fit<Exponential>(slice, opt.space, f);
-    else if (family == "sgd") fill_fit<Sgd>(slice, opt.space, f, sgd_seeds(slice, opt.space, a.fits));
-    else if (family == "exponential-power") fill_fit<ExponentialPower>(slice, opt.space, f);
-    else {
-      std::string known;
-      for (const auto& k : backscatter_families()) known += (known.empty() ? "" : ", ") + k;
-      throw InputError("distribution family '" + family + "'", "unknown; known: " + known);
-    }
+    family_registry().get(family)(slice, opt.space, f, a.fits);
     a.fits.push_back(std::move(f));
   }
   return a;

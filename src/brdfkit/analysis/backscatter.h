@@ -55,7 +55,8 @@ struct BackscatterAnalysis {
   std::vector<BackscatterFit> fits;  // in options.families order
 };
 
-// The distribution families the slice fit knows, in a stable order.
+// The distribution families the slice fit knows: every distribution of ndf/distributions.h, in
+// that order (BackscatterOptions::families defaults to five of them).
 const std::vector<std::string>& backscatter_families();
 
 // The slice (InputError naming the file when the data have no value on it).

@@ -11,116 +11,62 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/vec.h"
-#include "brdfkit/ndf/beckmann.h"
-#include "brdfkit/ndf/blinn_phong.h"
-#include "brdfkit/ndf/exponential.h"
-#include "brdfkit/ndf/ggx.h"
-#include "brdfkit/ndf/sawicki_rational.h"
-#include "brdfkit/ndf/schlick_rational.h"
+#include "brdfkit/ndf/distributions.h"
 
 namespace brdfkit::analysis {
 namespace {
 
 constexpr double kHalfPi = kPi / 2;
-const double kLn2 = std::log(2.0);
 const double kSqrt2 = std::sqrt(2.0);
 
-enum Id : int { kBeckmann, kBlinnPhong, kGaussian, kGgx, kSawicki, kSchlick, kExponential };
-
-// 1 − cos β without cancellation for small β.
-double one_minus_cos(double beta) {
-  const double s = std::sin(beta / 2);
-  return 2 * s * s;
+template <template <class> class D> NdfShape shape_of() {
+  using X = D<double>;
+  NdfShape s{std::string(X::kName), std::string(X::kUnitForm.symbol), std::string(X::kUnitForm.formula),
+             X::kUnitForm.lower, X::kUnitForm.upper, nullptr, nullptr, nullptr, "Boost toms748 on D/D(0) = 1/2 both ways"};
+  if constexpr (requires { X::unit_form(1.0, 1.0); })
+    s.unit_form = &X::unit_form;
+  else
+    s.unit_form = [](double p, double c) { return X(&p).unit(c); };
+  if constexpr (requires { X::beta_half(1.0); }) s.closed_beta_half = &X::beta_half;
+  if constexpr (requires { X::from_beta_half(1.0); }) s.closed_from_beta_half = &X::from_beta_half;
+  if constexpr (requires { X::kHalfMaxRule; }) s.half_max_rule = std::string(X::kHalfMaxRule);
+  return s;
 }
 
 }  // namespace
 
-const std::vector<NdfShape>& ndf_shapes() {
-  // Ranges: where D(0) is the maximum of D, so that D/D(0) is seed 001's D/max D. Beckmann's
-  // (1+x)² exp(−x/m²) (x = tan²β) rises at β = 0 for m > 1/√2; the exponential distribution's
-  // exp(−tanβ/α)/cos⁴β rises again beyond tanβ = 1 for α > ½.
-  static const std::vector<NdfShape> shapes = {
-      {"beckmann", "m_B", "Beckmann, exp(-tan^2 b/m_B^2)/cos^4 b (seed 001 Table 1)", 1e-6, 1 / std::sqrt(2.0), kBeckmann},
-      {"blinn-phong", "N", "Blinn-Phong, cos^N b (seed 001 Table 1)", 0.1, 1e12, kBlinnPhong},
-      {"gaussian", "m_G", "Gaussian (Torrance-Sparrow), exp(-b^2/m_G^2) (seed 001 Table 1)", 1e-6, 4.0, kGaussian},
-      {"ggx", "C_TR", "Trowbridge-Reitz / GGX, [C^2/(cos^2 b (C^2-1)+1)]^2 (seed 001 Table 1)", 1e-6, 1.0, kGgx},
-      {"sawicki-rational", "N_DS", "Sawicki 2006, 256 cos b/((1-N)cos b+N+3)^4 (seed 001 Table 1)", 1e-3, 1e12, kSawicki},
-      {"schlick-rational", "m_B",
-       "Schlick 1994, m^5 x/(cos b (m x^2-x^2+m^2)^2), x = cos b+m-1, zero for cos b < 1-m (seed 001 Table 1)", 1e-6,
-       1.0, kSchlick},
-      {"exponential", "alpha", "exponential, exp(-tan b/alpha)/cos^4 b (seed 000 Table 1)", 1e-6, 0.5, kExponential},
-  };
+const Registry<NdfShape>& ndf_shapes() {
+  static const Registry<NdfShape> shapes = [] {
+    Registry<NdfShape> r("distribution");
+    Distributions::for_each([&]<template <class> class D>() {
+      if constexpr (requires { D<double>::kUnitForm; }) r.add(std::string(D<double>::kName), shape_of<D>());
+    });
+    return r;
+  }();
   return shapes;
 }
 
 double NdfShape::unit(double p, double c) const {
   if (!(c > 0)) return 0;
-  c = std::min(c, 1.0);
-  switch (id) {
-    case kBeckmann:
-      return Beckmann<double>(&p).unit(c);
-    case kBlinnPhong:
-      return BlinnPhong<double>(&p).unit(c);
-    case kGaussian: {
-      // Not Gaussian<double>(&p).unit(c): its constructor integrates the normalization (a quadrature
-      // per new m, 200× the cost of a whole fit here), which the unit form does not need.
-      const double beta = std::acos(c);
-      return std::exp(-beta * beta / (p * p));
-    }
-    case kGgx:
-      return Ggx<double>(&p).unit(c);
-    case kSawicki:
-      return SawickiRational<double>(&p).unit(c);
-    case kSchlick:
-      return SchlickRational<double>(&p).unit(c);  // zero for cos β < 1 − m (seed 001 §2.2)
-    case kExponential:
-      return Exponential<double>(&p).unit(c);
-  }
-  return 0;
+  return unit_form(p, std::min(c, 1.0));
 }
 
-const NdfShape& ndf_shape(const std::string& name, const std::string& where) {
-  std::string known;
-  for (const auto& s : ndf_shapes()) {
-    if (s.name == name) return s;
-    known += (known.empty() ? "" : ", ") + s.name;
-  }
-  throw InputError(where, fmt::format("unknown distribution '{}' (known: {})", name, known));
+const NdfShape& ndf_shape(const std::string& name, const std::string& setting) {
+  if (const NdfShape* s = ndf_shapes().find(name)) return *s;
+  throw ndf_shapes().unknown_setting(setting, name);
 }
 
-void check_param(const NdfShape& s, double value, const std::string& where) {
+void check_param(const NdfShape& s, double value, const std::string& setting) {
   if (!std::isfinite(value) || value < s.lower || value > s.upper)
-    throw InputError(where, fmt::format("{} {} = {} is outside [{:g}, {:g}], where D/D(0) is a single decreasing lobe",
-                                        s.name, s.symbol, value, s.lower, s.upper));
+    throw SettingError(setting, fmt::format("{} {} = {} is outside [{:g}, {:g}], where D/D(0) is a single decreasing lobe",
+                                            s.name, s.symbol, value, s.lower, s.upper));
 }
 
-double beckmann_from_beta_half(double beta) {
-  // Seed 001 Eq. 9; ln cos β through log1p for small β.
-  return std::tan(beta) / std::sqrt(kLn2 - 4 * std::log1p(-one_minus_cos(beta)));
-}
+double beckmann_from_beta_half(double beta) { return *Beckmann<double>::from_beta_half(beta); }
 
 std::optional<double> beta_half(const NdfShape& s, double p) {
-  switch (s.id) {
-    case kBlinnPhong:
-      // Eq. 6, cos β = 2^(−1/N), in the form 2 asin(sqrt((1 − cos β)/2)) that keeps N up to 1e12 exact.
-      return 2 * std::asin(std::sqrt(-std::expm1(-kLn2 / p) / 2));
-    case kGaussian: {
-      const double b = p * std::sqrt(kLn2);  // Eq. 7
-      if (b >= kHalfPi) return std::nullopt;
-      return b;
-    }
-    case kGgx: {
-      // Eq. 8 as sin²β = 1 − cos²β = C²(√2 − 1)/(1 − C²): no cancellation for small C. The shape
-      // stays above ½ (D(π/2)/D(0) = C⁴) for C ≥ 2^(−1/4).
-      const double c2 = p * p;
-      const double s2 = c2 * (kSqrt2 - 1) / (1 - c2);
-      if (!(s2 < 1)) return std::nullopt;
-      return std::asin(std::sqrt(s2));
-    }
-    default:
-      break;
-  }
-  // No closed form (Beckmann, Sawicki, Schlick, exponential): D/D(0) − ½ changes sign once on [0, π/2].
+  if (s.closed_beta_half) return s.closed_beta_half(p);
+  // No closed form: D/D(0) − ½ changes sign once on [0, π/2].
   auto f = [&](double b) { return s.unit(p, std::cos(b)) - 0.5; };
   const double f_hi = f(kHalfPi);
   if (f_hi >= 0) return std::nullopt;
@@ -133,41 +79,20 @@ std::optional<double> beta_half(const NdfShape& s, double p) {
 std::optional<double> param_from_beta_half(const NdfShape& s, double beta) {
   if (!(beta > 0) || !(beta < kHalfPi)) return std::nullopt;
   std::optional<double> p;
-  switch (s.id) {
-    case kBeckmann:
-      p = beckmann_from_beta_half(beta);
-      break;
-    case kBlinnPhong:  // Eq. 3, ln cos β through log1p
-      p = -kLn2 / std::log1p(-one_minus_cos(beta));
-      break;
-    case kGaussian:  // Eq. 4
-      p = beta / std::sqrt(kLn2);
-      break;
-    case kGgx: {  // Eq. 5 as C² = sin²β/(√2 − 1 + sin²β)
-      const double s2 = std::sin(beta) * std::sin(beta);
-      p = std::sqrt(s2 / (kSqrt2 - 1 + s2));
-      break;
-    }
-    case kSawicki: {
-      // Eq. 10 with d = 1 − cos β: (4 (2(1 − d))^¼ + d − 4)/d; the numerator tends to
-      // 4·2^¼ − 4, so only the denominator is small and it is exact.
-      const double d = one_minus_cos(beta);
-      p = (4 * std::pow(2 * (1 - d), 0.25) + d - 4) / d;
-      break;
-    }
-    default: {
-      // Schlick, exponential: root of D/D(0) − ½ in the log-parameter (monotone in it).
-      auto g = [&](double lp) { return s.unit(std::exp(lp), std::cos(beta)) - 0.5; };
-      const double a = std::log(s.lower), b = std::log(s.upper);
-      const double ga = g(a), gb = g(b);
-      if (ga == 0) return s.lower;
-      if (gb == 0) return s.upper;
-      if ((ga > 0) == (gb > 0)) return std::nullopt;
-      std::uintmax_t iters = 200;
-      const auto [lo, hi] =
-          boost::math::tools::toms748_solve(g, a, b, ga, gb, boost::math::tools::eps_tolerance<double>(52), iters);
-      p = std::exp((lo + hi) / 2);
-    }
+  if (s.closed_from_beta_half) {
+    p = s.closed_from_beta_half(beta);
+  } else {
+    // Root of D/D(0) − ½ in the log-parameter (monotone in it).
+    auto g = [&](double lp) { return s.unit(std::exp(lp), std::cos(beta)) - 0.5; };
+    const double a = std::log(s.lower), b = std::log(s.upper);
+    const double ga = g(a), gb = g(b);
+    if (ga == 0) return s.lower;
+    if (gb == 0) return s.upper;
+    if ((ga > 0) == (gb > 0)) return std::nullopt;
+    std::uintmax_t iters = 200;
+    const auto [lo, hi] =
+        boost::math::tools::toms748_solve(g, a, b, ga, gb, boost::math::tools::eps_tolerance<double>(52), iters);
+    p = std::exp((lo + hi) / 2);
   }
   if (!p || !std::isfinite(*p) || *p < s.lower || *p > s.upper) return std::nullopt;
   return p;
@@ -176,7 +101,7 @@ std::optional<double> param_from_beta_half(const NdfShape& s, double beta) {
 RmseDomain rmse_domain(const NdfShape& from, double value) {
   RmseDomain d;
   d.samples = kRmseSamples;
-  if (from.id == kBeckmann) {
+  if (from.name == "beckmann") {
     d.m_B = value;
   } else if (auto b = beta_half(from, value)) {
     d.m_B = beckmann_from_beta_half(*b);
@@ -200,7 +125,7 @@ double unit_rmse(const NdfShape& a, double pa, const NdfShape& b, double pb, con
 }
 
 double rmse_fit(const NdfShape& from, double value, const NdfShape& to, const RmseDomain& domain) {
-  if (from.id == to.id) return value;
+  if (from.name == to.name) return value;
   auto cost = [&](double lp) { return unit_rmse(from, value, to, std::exp(lp), domain); };
   const double range_lo = std::log(to.lower), range_hi = std::log(to.upper);
   // Coarse scan in log-parameter around the half-max guess (or over the whole range), moving the
@@ -241,15 +166,12 @@ std::optional<FittedFormula> sawicki_formula(const NdfShape& from, double v, con
   // including 1.696 (C_TR → N) against 1.697 (N → C_TR) (DESIGN.md §11).
   enum G { B, N, MG, DS, TR, None };
   auto group = [](const NdfShape& s) {
-    switch (s.id) {
-      case kBeckmann:
-      case kSchlick: return B;
-      case kBlinnPhong: return N;
-      case kGaussian: return MG;
-      case kSawicki: return DS;
-      case kGgx: return TR;
-      default: return None;
-    }
+    if (s.name == "beckmann" || s.name == "schlick-rational") return B;
+    if (s.name == "blinn-phong") return N;
+    if (s.name == "gaussian") return MG;
+    if (s.name == "sawicki-rational") return DS;
+    if (s.name == "ggx") return TR;
+    return None;
   };
   const G f = group(from), t = group(to);
   if (f == None || t == None) return std::nullopt;
@@ -263,7 +185,7 @@ std::optional<FittedFormula> sawicki_formula(const NdfShape& from, double v, con
   auto t4_N_to_TR = [](double n) { return 1.697 / std::sqrt(n + 4.5); };
 
   auto apply = [&](G a, G b, double x) -> FittedFormula {
-    if (a == b) return {x, a == B && from.id != to.id ? "identity (seed 001 §3: Schlick approximates Beckmann for the same m_B)" : "identity", 0};
+    if (a == b) return {x, a == B && from.name != to.name ? "identity (seed 001 §3: Schlick approximates Beckmann for the same m_B)" : "identity", 0};
     switch (a) {
       case B:
         switch (b) {
@@ -324,7 +246,7 @@ Method parse_method(const std::string& name) {
   if (name == "half-max") return Method::HalfMax;
   if (name == "sawicki") return Method::Sawicki;
   if (name == "rmse") return Method::Rmse;
-  throw InputError("--method", fmt::format("unknown method '{}' (known: half-max, sawicki, rmse)", name));
+  throw SettingError("method", fmt::format("unknown method '{}'; known methods: half-max, sawicki, rmse", name));
 }
 
 std::string method_name(Method m) {
@@ -336,26 +258,11 @@ std::string method_name(Method m) {
   return "?";
 }
 
-namespace {
-
-std::string beta_half_rule(const NdfShape& s) {
-  switch (s.id) {
-    case kBlinnPhong: return "Eq. 6/3";
-    case kGaussian: return "Eq. 7/4";
-    case kGgx: return "Eq. 8/5";
-    case kBeckmann: return "Boost toms748 on D/D(0) = 1/2 / Eq. 9";
-    case kSawicki: return "Boost toms748 on D/D(0) = 1/2 / Eq. 10";
-    default: return "Boost toms748 on D/D(0) = 1/2 both ways";
-  }
-}
-
-}  // namespace
-
 Conversion convert_ndf(const std::string& from_name, const std::string& to_name, double value, Method method) {
   Conversion c;
-  c.from = &ndf_shape(from_name, "--from");
-  c.to = &ndf_shape(to_name, "--to");
-  check_param(*c.from, value, "VALUE");
+  c.from = &ndf_shape(from_name, "from");
+  c.to = &ndf_shape(to_name, "to");
+  check_param(*c.from, value, "value");
   c.value = value;
   c.requested = c.used = method;
   c.domain = rmse_domain(*c.from, value);
@@ -363,22 +270,22 @@ Conversion convert_ndf(const std::string& from_name, const std::string& to_name,
 
   const auto& from = *c.from;
   const auto& to = *c.to;
-  if (from.id == to.id) {
+  if (from.name == to.name) {
     c.result = value;
     c.equation = "identity (same distribution)";
   } else if (method == Method::HalfMax) {
     if (!c.beta_half_from)
-      throw InputError("VALUE", fmt::format("{} {} = {} never falls to half its peak on [0, pi/2]: half-max conversion "
+      throw SettingError("value", fmt::format("{} {} = {} never falls to half its peak on [0, pi/2]: half-max conversion "
                                             "is undefined (use --method rmse)",
                                             from.name, from.symbol, value));
     const auto p = param_from_beta_half(to, *c.beta_half_from);
     if (!p)
-      throw InputError("--to", fmt::format("no {} {} in [{:g}, {:g}] falls to half its peak at beta_half = {} rad "
+      throw SettingError("to", fmt::format("no {} {} in [{:g}, {:g}] falls to half its peak at beta_half = {} rad "
                                            "(use --method rmse)",
                                            to.name, to.symbol, to.lower, to.upper, *c.beta_half_from));
     c.result = *p;
-    c.equation = fmt::format("equal beta_half: {} ({}), {} ({})", from.name, beta_half_rule(from), to.name,
-                             beta_half_rule(to));
+    c.equation = fmt::format("equal beta_half: {} ({}), {} ({})", from.name, from.half_max_rule, to.name,
+                             to.half_max_rule);
   } else {
     if (method == Method::Sawicki) {
       const auto f = sawicki_formula(from, value, to);

@@ -11,28 +11,35 @@
 // For a source that is not Beckmann, m_B above is its half-max equivalent (Eq. 9 at the source's
 // β_half), so the domain is the same whichever of two half-max-equivalent sources one starts from.
 #include <optional>
+#include "brdfkit/core/registry.h"
 #include <string>
 #include <vector>
 
 namespace brdfkit::analysis {
 
-// A one-parameter distribution seen through its unit form.
+// A one-parameter distribution seen through its unit form: every distribution of
+// ndf/distributions.h that declares a kUnitForm (ndf/distribution.h).
 struct NdfShape {
-  std::string name;         // command-line name, e.g. "blinn-phong"
+  std::string name;         // the distribution's kName, e.g. "blinn-phong"
   std::string symbol;       // seed 001's name of the parameter, e.g. "N"
   std::string description;  // one line with the source of the unit form
   double lower;             // parameter range in which D(0) is the maximum of D (so D/D(0) is the
   double upper;             // paper's D/max D) and the shape is a single decreasing lobe
-  double unit(double param, double cos_beta) const;
+  double (*unit_form)(double param, double cos_beta);
+  // Seed 001 Eq. 3–10 where the distribution has them in closed form, nullptr otherwise.
+  std::optional<double> (*closed_beta_half)(double param);
+  std::optional<double> (*closed_from_beta_half)(double beta);
+  std::string half_max_rule;  // which equations give β_half both ways
 
-  int id;  // internal
+  double unit(double param, double cos_beta) const;
 };
 
-const std::vector<NdfShape>& ndf_shapes();
-// Throws InputError(where, …) naming the known distributions when `name` is unknown.
-const NdfShape& ndf_shape(const std::string& name, const std::string& where = "distribution");
-// Throws InputError(where, …) unless `value` is finite and in [lower, upper].
-void check_param(const NdfShape& s, double value, const std::string& where);
+// The shapes, in ndf/distributions.h order, by name.
+const Registry<NdfShape>& ndf_shapes();
+// Throws SettingError(setting, …) naming the known distributions when `name` is unknown.
+const NdfShape& ndf_shape(const std::string& name, const std::string& setting = "distribution");
+// Throws SettingError(setting, …) unless `value` is finite and in [lower, upper].
+void check_param(const NdfShape& s, double value, const std::string& setting);
 
 // β_half of the unit form (radians), or nullopt when D/D(0) stays above ½ on [0, π/2].
 std::optional<double> beta_half(const NdfShape& s, double param);
@@ -74,7 +81,7 @@ inline constexpr double kSawickiMinMB = 0.0044;
 inline constexpr double kSawickiMaxMB = 0.4473;
 
 enum class Method { HalfMax, Sawicki, Rmse };
-Method parse_method(const std::string& name);  // throws InputError("--method", …)
+Method parse_method(const std::string& name);  // throws SettingError("method", …)
 std::string method_name(Method m);
 
 struct Conversion {

@@ -294,7 +294,7 @@ const NdfEstimationOptions& checked(const NdfEstimationOptions& opt) {
   if (opt.max_iterations < 0 || opt.max_iterations > 50)
     throw InputError("ndf estimation", "iterations must be in [0, 50]");
   if (opt.nodes < 8 || opt.nodes > 2000) throw InputError("ndf estimation", "nodes must be in [8, 2000]");
-  if (opt.f0 && !(*opt.f0 >= 0 && *opt.f0 <= 1)) throw InputError("--f0", "must be in [0, 1]");
+  if (opt.f0 && !(*opt.f0 >= 0 && *opt.f0 <= 1)) throw SettingError("f0", "must be in [0, 1]");
   if (!(opt.smoothing >= 0)) throw InputError("ndf estimation", "smoothing must be >= 0");
   return opt;
 }

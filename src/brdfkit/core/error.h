@@ -1,14 +1,28 @@
 #pragma once
-// Errors the command line turns into a one-line message and an exit code.
+// Errors that interfaces (the command line, Python) turn into a one-line message: bad input names
+// the file, field or parameter; a bad setting names the setting and what it accepts.
 #include <stdexcept>
 #include <string>
 
 namespace brdfkit {
 
-// Bad input (file, field or parameter): message names what is wrong; exit code 2.
+// Bad input (file, field or parameter): the message names what is wrong; exit code 2.
 class InputError : public std::runtime_error {
  public:
   InputError(const std::string& where, const std::string& what) : std::runtime_error(where + ": " + what) {}
+};
+
+// A setting outside what it accepts. `setting` is the library's name of it (`max_iterations`):
+// the command line shows it as its flag (`--max-iterations`), Python as its keyword argument.
+class SettingError : public InputError {
+ public:
+  SettingError(const std::string& setting, const std::string& detail)
+      : InputError(setting, detail), setting_(setting), detail_(detail) {}
+  const std::string& setting() const { return setting_; }
+  const std::string& detail() const { return detail_; }
+
+ private:
+  std::string setting_, detail_;
 };
 
 }  // namespace brdfkit

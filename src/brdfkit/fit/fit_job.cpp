@@ -4,70 +4,42 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/metric/metric_report.h"
-#include "brdfkit/fit/procedure/procedure.h"
 
 namespace brdfkit::fit {
 
-void validate(const FitJobOptions& opt) {
-  if (!opt.procedure.empty()) procedure_metric(opt.procedure);  // InputError listing the known ids
-  if (!opt.metric.empty()) parse_metric_list(opt.metric);       // InputError listing the known ids
-  if (opt.metric.find(',') != std::string::npos) throw InputError("--metric", "names one fitting metric");
-  if (opt.starts < 1) throw InputError("--starts", "must be >= 1");
-  if (opt.coarsen < 1) throw InputError("--coarsen", "must be >= 1");
-  if (opt.max_iterations < 1) throw InputError("--max-iterations", "must be >= 1");
-}
-
-std::string fitting_metric(const FitJobOptions& opt) {
-  if (!opt.metric.empty()) return opt.metric;
-  if (!opt.procedure.empty()) return std::string(procedure_metric(opt.procedure));
-  return "ngan";
-}
-
-FitJobResult run_fit_job(const Model& model, const MeasuredBrdf& data, const std::string& file,
-                         const std::string& sha256, const FitJobOptions& opt) {
-  validate(opt);
-  ProcedureOptions po;
-  po.starts = opt.starts;
-  po.seed = opt.seed;
-  po.max_iterations = opt.max_iterations;
-  po.coarsen = opt.coarsen;
-  po.metric = opt.metric;
-  po.per_channel_shape = opt.per_channel_shape;
-  po.progress = opt.progress;
-  // A plain fit under a metric is the `ngan` preset with its metric replaced: variable projection
-  // of the colours inside a bounded fit of the shape (DESIGN.md §8).
-  if (opt.procedure.empty() && po.metric.empty()) po.metric = "ngan";
-  ProcedureResult pr = run_procedure(opt.procedure.empty() ? "ngan" : opt.procedure, model, data, po);
+FitJobResult run_fit_job(const Model& model, MetricStore& store, const std::string& file, const std::string& sha256,
+                         const FitSettings& settings, const Progress& progress) {
+  ProcedureResult pr = run_procedure(model, store, settings, progress);
   FitJobResult r;
   r.fit = pr.fit;
   r.steps = std::move(pr.steps);
-  if (pr.fit.scan_points > 0)  // FitOptions::scan_start
-    r.steps.push_back("start 0 = best of " + std::to_string(pr.fit.scan_points) + " scan points (fit/start_scan.h)");
+  if (pr.fit.scan_points > 0)  // FitSettings::scan_start
+    r.steps.push_back("start 0 = best of " + std::to_string(pr.fit.scan_points) + " scan points (fit/engine/start_scan.h)");
   FitRecord& rec = r.record;
   rec.model = std::string(model.name());
   rec.values = pr.fit.values;
   rec.data_file = file;
   rec.data_sha256 = sha256;
-  rec.fit_metric = pr.metric.empty() ? fitting_metric(opt) : pr.metric;
-  rec.starts = opt.starts;
-  rec.seed = opt.seed;
+  rec.fit_metric = pr.metric;
+  rec.starts = settings.starts;
+  rec.seed = settings.seed;
   rec.iterations = pr.fit.iterations;
   rec.seconds = pr.fit.seconds;
   rec.converged = pr.fit.converged;
   rec.message = pr.fit.message;
-  rec.coarsen = opt.coarsen;
-  rec.per_channel_shape = opt.per_channel_shape;  // also when the channels' shapes happen to coincide
+  rec.coarsen = settings.coarsen;
+  rec.per_channel_shape = settings.per_channel_shape;  // also when the channels' shapes happen to coincide
   for (const auto& channel : rec.values.values)
     for (double x : channel)
       if (!std::isfinite(x)) throw FitError("the fit produced a non-finite parameter value");
   return r;
 }
 
-nlohmann::json fit_job_json(const FitJobResult& r, const FitJobOptions& opt, const std::string& material) {
+nlohmann::json fit_job_json(const FitJobResult& r, const FitSettings& settings, const std::string& material) {
   nlohmann::json j = to_json(r.record);
-  j["fit"]["procedure"] = opt.procedure.empty() ? nlohmann::json(nullptr) : nlohmann::json(opt.procedure);
-  j["fit"]["per_channel_shape"] = opt.per_channel_shape;
-  j["fit"]["max_iterations"] = opt.max_iterations;
+  j["fit"]["procedure"] = settings.procedure.empty() ? nlohmann::json(nullptr) : nlohmann::json(settings.procedure);
+  j["fit"]["per_channel_shape"] = settings.per_channel_shape;
+  j["fit"]["max_iterations"] = settings.max_iterations;
   j["fit"]["best_start"] = r.fit.best_start;
   j["fit"]["start_scan_points"] = r.fit.scan_points;  // start 0 = best of this many scan points; 0: the defaults
   j["fit"]["steps"] = r.steps;
@@ -89,7 +61,7 @@ template <class T> bool field_is(const nlohmann::json& obj, const char* key, con
 }  // namespace
 
 bool fit_job_matches(const nlohmann::json& saved, const std::string& model, const std::string& sha256,
-                     const FitJobOptions& opt, const std::vector<std::string>& report) {
+                     const FitSettings& opt, const std::vector<std::string>& report) {
   if (!saved.is_object() || !field_is<std::string>(saved, "format", "brdfkit-fit")) return false;
   if (!field_is<std::string>(saved, "brdfkit_version", BRDFKIT_VERSION)) return false;
   if (!field_is<std::string>(saved, "model", model)) return false;

@@ -11,15 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/models/model.h"
 
 namespace brdfkit::fit {
-
-struct MetricReport {
-  std::string id;
-  std::optional<double> value;  // nullopt: the metric does not apply to these data (see note)
-  std::string note;
-};
 
 struct FitRecord {
   std::string model;

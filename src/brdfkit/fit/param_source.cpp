@@ -131,7 +131,7 @@ Brdf brdf_from_arguments(const std::string& model, const std::vector<std::string
                          const std::filesystem::path& file, const std::string& material) {
   if (model.empty() == file.empty())
     throw InputError("MODEL / --params", "give a model name or a parameter file (--params), not both");
-  if (!material.empty() && file.empty()) throw InputError("--material", "needs a published-fits file given with --params");
+  if (!material.empty() && file.empty()) throw SettingError("material", "needs a published-fits file given with --params");
   if (!model.empty()) {
     const Model& m = model_by_name(model);
     return Brdf(m, params_from_args(m.params(), params));

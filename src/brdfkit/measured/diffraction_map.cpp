@@ -14,7 +14,7 @@ DiffractionMap diffraction_map(const MeasuredBrdf& data, const DiffractionOption
   if (opt.theta_h_cells < 3 || opt.theta_d_cells < 3 || opt.phi_d_samples < 1 || opt.theta_h_cells > 1000 ||
       opt.theta_d_cells > 1000 || opt.phi_d_samples > 1000)
     throw InputError("diffraction map", "grid sizes must be in [3, 1000] (phi_d in [1, 1000])");
-  if (!(opt.threshold > 0)) throw InputError("--threshold", "must be > 0");
+  if (!(opt.threshold > 0)) throw SettingError("threshold", "must be > 0");
   if (!(opt.max_theta > 0 && opt.max_theta <= kPi / 2)) throw InputError("diffraction map", "max_theta must be in (0, pi/2]");
   const int nh = opt.theta_h_cells, nd = opt.theta_d_cells, np = opt.phi_d_samples;
   DiffractionMap map;

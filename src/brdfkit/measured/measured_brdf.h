@@ -2,6 +2,7 @@
 // One interface for every measured format (MERL, RGL tensor_file, Cornell, ALTA slices).
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +11,10 @@
 #include "brdfkit/measured/sample_set.h"
 
 namespace brdfkit {
+
+namespace merl {
+class Table;
+}
 
 class MeasuredBrdf {
  public:
@@ -20,6 +25,15 @@ class MeasuredBrdf {
   // ρ(wi, wo) per channel where the data answer it (tabulated formats: anywhere above the
   // horizon; scattered formats: nullopt). nullopt also where the cell was not measured.
   virtual std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const = 0;
+  // out[k] = eval(wi, wo[k]) for every k, the same values: formats whose look-up has a part that
+  // depends on wi alone (RGL's row of the warp) do it once per row.
+  virtual void eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
+    out.resize(wo.size());
+    for (size_t k = 0; k < wo.size(); ++k) out[k] = eval(wi, wo[k]);
+  }
+  // The data's own MERL cells when it is a MERL table (metrics then integrate over the cells,
+  // fit/metric/metric_cells.h); nullptr otherwise.
+  virtual const merl::Table* merl_cells() const { return nullptr; }
   // The measurement as samples (a MERL cell, an RGL node, a Cornell line, an ALTA row).
   virtual SampleSet samples() const = 0;
   // Directional albedo (per channel) at each incidence angle θi (radians) the data hold, computed

@@ -29,6 +29,7 @@ class MerlBrdf final : public MeasuredBrdf {
   SampleSet samples() const override;
 
   const merl::Table& table() const { return table_; }
+  const merl::Table* merl_cells() const override { return &table_; }
 
  private:
   merl::Table table_;

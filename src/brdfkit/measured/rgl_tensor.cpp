@@ -249,7 +249,7 @@ struct Lookup {
   double factor;
 };
 
-// Shared by every evaluation (single pairs and eval_from), so they agree by construction.
+// Shared by every evaluation (single pairs and eval_row), so they agree by construction.
 std::optional<Lookup> lookup_pair(const Vec3d& wc, const Conditioning& c, const Vec3d& wx, bool cosine_of_other,
                                   bool jacobian, const MarginalWarp2D& vndf, const MarginalWarp2D& ndf) {
   if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
@@ -277,7 +277,7 @@ std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, b
   return Rgb(v * l->factor);
 }
 
-void RglBrdf::eval_from(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
+void RglBrdf::eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
   out.assign(wo.size(), std::nullopt);
   if (!(wi.z() > 0)) return;
   const Conditioning c = condition_on(wi, vndf_, sigma_);

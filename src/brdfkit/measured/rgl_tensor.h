@@ -40,7 +40,7 @@ class RglBrdf final : public MeasuredBrdf {
   // out[k] = eval(wi, wo[k]) for every k, the same values by the same operations, with what
   // depends on wi alone (its angles, its θi interpolation weights, σ(wi)) computed once: the
   // look-ups of a metric's chunk share wi.
-  void eval_from(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const;
+  void eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const override;
   // ρ with the table conditioned on `wc` and the other direction `wx`. With `cosine_of_other`
   // false the cosine is taken on ωc (pbrt-v4 before PR #215): only for tests that show it wrong.
   std::optional<Rgb> eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other = true) const;

@@ -32,9 +32,9 @@ struct StatsAccumulator {
 
 void fill_counts_and_stats(const MeasuredBrdf& brdf, MeasuredSummary& s) {
   std::array<StatsAccumulator, 3> acc;
-  if (const auto* merl_brdf = dynamic_cast<const MerlBrdf*>(&brdf)) {
+  if (const merl::Table* table = brdf.merl_cells()) {
     // The table itself: samples() would list only the valid cells, and costs directions.
-    const merl::Table& t = merl_brdf->table();
+    const merl::Table& t = *table;
     s.total = merl::kCellCount;
     for (size_t k = 0; k < merl::kCellCount; ++k) {
       if (!t.valid(k)) continue;

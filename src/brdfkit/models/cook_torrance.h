@@ -156,7 +156,7 @@ struct CookTorrance {
     const Fresnel<double> fresnel[1] = {Fresnel<double>(p + fresnel_offset())};
     batch_loop<1>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out, nullptr);
   }
-  // eval_batch at two values a, b of one Fresnel parameter (Model::eval_batch_pair): D, G and the
+  // eval_batch at two values a, b of one Fresnel parameter (models/paired_evaluation.h): D, G and the
   // cosines once, the Fresnel term twice, both outputs equal to eval_batch's to the bit. False
   // (nothing written) for a parameter outside the Fresnel term.
   static bool eval_batch_pair(const double* p, int, int param, double a, double b, std::size_t n, const double* wix,

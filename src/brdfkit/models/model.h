@@ -11,14 +11,11 @@
 // not vectorize, e.g. terms that do not depend on the pair are hoisted out of it):
 //   static void eval_batch(const double* p, int c, size_t n, const double* wi_x, wi_y, wi_z,
 //                          wo_x, wo_y, wo_z, double* out);
-// where p holds channel c's value of every parameter (ParamValues::channel), and optionally
-//   static bool eval_batch_pair(const double* p, int c, int param, double a, double b, size_t n,
-//                               wi_x, …, wo_z, double* out_a, double* out_b);
-// ρ with parameter `param` set to a and to b in one pass, false when the model has no shared
-// work for that parameter (Model::eval_batch_pair). `eval` is one
-// template for doubles, SIMD-friendly loops and Ceres Jets. ModelAdapter<M> turns such a type
-// into the runtime Model the CLI, reports and Python use; fitting instantiates M::eval<Jet>, and
-// evaluates whole domains through Model::eval_batch (one virtual call per batch, DESIGN.md §12).
+// where p holds channel c's value of every parameter (ParamValues::channel). `eval` is one template
+// for doubles, SIMD-friendly loops and Ceres Jets (tests check the Jets against differences of
+// the doubles). ModelAdapter<M> turns such a type into the runtime Model the CLI, reports,
+// fitting and Python use; whole domains are evaluated through Model::eval_batch (one virtual
+// call per batch, DESIGN.md §12).
 #include <concepts>
 #include <cstddef>
 #include <memory>
@@ -27,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "brdfkit/core/registry.h"
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 
@@ -52,18 +50,6 @@ class Model {
   virtual void eval_batch(const double* p, int c, std::size_t n, const SoaPairs& d, double* out) const {
     for (std::size_t k = 0; k < n; ++k)
       out[k] = eval(p, c, Vec3d(d.wi_x[k], d.wi_y[k], d.wi_z[k]), Vec3d(d.wo_x[k], d.wo_y[k], d.wo_z[k]));
-  }
-  // eval_batch with parameter `param` set to a (into out_a) and to b (into out_b), the values of
-  // two eval_batch calls to the bit. Variable projection evaluates a Fresnel-paired colour's two
-  // linear bases this way (fit/variable_projection.cpp): a model whose other terms are costly
-  // (Cook-Torrance's D and G) computes them once. This default makes the two calls.
-  virtual void eval_batch_pair(const double* p, int c, int param, double a, double b, std::size_t n,
-                               const SoaPairs& d, double* out_a, double* out_b) const {
-    std::vector<double> q(p, p + params().size());
-    q[std::size_t(param)] = a;
-    eval_batch(q.data(), c, n, d, out_a);
-    q[std::size_t(param)] = b;
-    eval_batch(q.data(), c, n, d, out_b);
   }
   // Draws wi given wo (u uniform in [0,1)², u_lobe uniform in [0,1) picks a lobe); nullopt when
   // the draw lands below the horizon (its probability mass is part of pdf's deficit).
@@ -92,19 +78,6 @@ template <class M> class ModelAdapter : public Model {
                                           Vec3d(d.wo_x[k], d.wo_y[k], d.wo_z[k]));
     }
   }
-  void eval_batch_pair(const double* p, int c, int param, double a, double b, std::size_t n, const SoaPairs& d,
-                       double* out_a, double* out_b) const override {
-    if constexpr (requires {
-                    {
-                      M::eval_batch_pair(p, c, param, a, b, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out_a,
-                                         out_b)
-                    } -> std::same_as<bool>;
-                  }) {
-      if (M::eval_batch_pair(p, c, param, a, b, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out_a, out_b))
-        return;
-    }
-    Model::eval_batch_pair(p, c, param, a, b, n, d, out_a, out_b);
-  }
   std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
     return M::sample(p, c, wo, u, u_lobe);
   }
@@ -132,7 +105,9 @@ class Brdf {
   ParamValues values_;
 };
 
-// Every model of the catalogue, in a stable order.
+// The catalogue: every model by name, in the order `brdfkit models` lists them.
+const Registry<const Model*>& model_registry();
+// Every model of the catalogue, in that order.
 std::span<const Model* const> all_models();
 // The model called `name`; throws InputError listing the known names otherwise.
 const Model& model_by_name(std::string_view name);

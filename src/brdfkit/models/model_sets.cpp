@@ -35,7 +35,7 @@ std::vector<const Model*> parse_model_set(const std::string& spec) {
     const Model* m = &model_by_name(name);  // InputError listing the known names
     if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
   }
-  if (out.empty()) throw InputError("--models", "no model named (give names, 'all' or 'single-lobe')");
+  if (out.empty()) throw SettingError("models", "no model named (give names, 'all' or 'single-lobe')");
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/registry.h"
 #include "brdfkit/models/cook_torrance_models.h"
 #include "brdfkit/models/ashikhmin_shirley.h"
 #include "brdfkit/models/blinn_phong_lobe.h"
@@ -29,38 +30,24 @@ template <class M> const Model* instance() {
 }
 }  // namespace
 
-std::span<const Model* const> all_models() {
-  static const Model* const models[] = {
-      instance<Lambert>(),
-      cook_torrance_ngan_model(),
-      cook_torrance_beckmann_model(),
-      cook_torrance_blinn_phong_model(),
-      cook_torrance_gaussian_model(),
-      cook_torrance_ggx_model(),
-      cook_torrance_gtr_model(),
-      cook_torrance_exponential_model(),
-      cook_torrance_sgd_model(),
-      cook_torrance_exponential_power_model(),
-      cook_torrance_schlick_rational_model(),
-      cook_torrance_sawicki_rational_model(),
-      instance<Ward>(),
-      instance<WardAniso>(),
-      instance<WardDuer>(),
-      instance<BlinnPhongLobe>(),
-      instance<Lafortune>(),
-      instance<Lafortune2>(),
-      instance<AshikhminShirley>(),
-      instance<AshikhminShirleyDielectric>(),
-      instance<HeTorrance>(),
-      instance<LowSmooth>(),
-      instance<LowSmooth2>(),
-      low_microfacet_model(),
-      holzschuch_pacanowski_model(),
-      low_cook_torrance_model(),
-      bagher_sgd_model(),
-  };
-  return models;
+const Registry<const Model*>& model_registry() {
+  static const Registry<const Model*> registry = [] {
+    Registry<const Model*> r("model");
+    auto add = [&](const Model* m) { r.add(std::string(m->name()), m); };
+    add(instance<Lambert>());
+    for (const Model* m : cook_torrance_models()) add(m);
+    for (const Model* m : {instance<Ward>(), instance<WardAniso>(), instance<WardDuer>(), instance<BlinnPhongLobe>(),
+                           instance<Lafortune>(), instance<Lafortune2>(), instance<AshikhminShirley>(),
+                           instance<AshikhminShirleyDielectric>(), instance<HeTorrance>(), instance<LowSmooth>(),
+                           instance<LowSmooth2>(), low_microfacet_model(), holzschuch_pacanowski_model(),
+                           low_cook_torrance_model(), bagher_sgd_model()})
+      add(m);
+    return r;
+  }();
+  return registry;
 }
+
+std::span<const Model* const> all_models() { return model_registry().values(); }
 
 const Model& model_by_name(std::string_view name) {
   // Sums "a+b+…" (models/lobe_sum.h) are built on first use and live as long as the program, as
@@ -75,12 +62,8 @@ const Model& model_by_name(std::string_view name) {
     sums.emplace(std::string(name), std::move(sum));
     return m;
   }
-  std::string known;
-  for (const Model* m : all_models()) {
-    if (m->name() == name) return *m;
-    known += (known.empty() ? "" : ", ") + std::string(m->name());
-  }
-  throw InputError("model '" + std::string(name) + "'", "unknown; known models: " + known + " (and sums of them joined by '+')");
+  if (const Model* const* m = model_registry().find(name)) return **m;
+  throw model_registry().unknown(name, " (and sums of them joined by '+')");
 }
 
 }  // namespace brdfkit

@@ -7,14 +7,15 @@
 // normalized() rescales A so that the interface contract ∫ D cosθ dω = 1 holds (used by Λ).
 // sample() draws density D cosθ (the interface) by inverting that CDF with toms748;
 // sample_paper()/pdf_paper() are seed 003 Eq. 23–26: density ∝ S over solid angle (no cosθ).
-// Interface: see beckmann.h.
+// Interface: ndf/distribution.h.
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/ndf/slope_space.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
@@ -27,6 +28,7 @@ template <class T> T abc_expm1_ratio(const T& a, const T& L) {
 }
 
 template <class T> struct AbcFacet {
+  static constexpr std::string_view kName = "abc-facet", kTitle = "ABC facet";
   T A, B, C;
 
   static ParamTable params() {
@@ -52,8 +54,8 @@ template <class T> struct AbcFacet {
     r.A = T(1) / (T(2 * kPi) * cos_weighted_mass());
     return r;
   }
-  // Λ of the normalized distribution: Smith's Λ needs ∫ D cosθ dω = 1.
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(normalized(), tan_theta); }
+  // The distribution whose Smith Λ this one has (shadowing/smith.h): Λ needs ∫ D cosθ dω = 1.
+  AbcFacet smith_form() const { return normalized(); }
 
   // ∫_c^1 (1 + B(1−c'))^{−C} c' dc' as a function of L = ln(1 + B(1−c)) ∈ [0, ln(1+B)].
   // Relative rounding error ~ 1e-16/B (the two terms cancel for small B; B ≥ 1e-3 here).

@@ -1,26 +1,30 @@
 #pragma once
 // Beckmann distribution: P22(x) = exp(−x/α²)/(π α²), x = tan²θ (seed 000 Table 1, DESIGN.md §3).
 //
-// The shape every distribution in ndf/ follows (pbrt-v4's TrowbridgeReitzDistribution in spirit):
-// a value type templated on the scalar (double or ceres::Jet), built from the model's parameter
-// values, with
-//   static ParamTable params();               names, bounds, defaults (all Scope::Shared)
-//   explicit X(const T* p);                   from parameter values in params() order
-//   T D(const T& cos_theta) const;            normalized: ∫ D(ωm) cosθm dωm = 1, zero for cosθ ≤ 0
-//   T P22(const T& x) const;                  slope-space form, x = tan²θ (where defined)
-//   T unit(const T& cos_theta) const;         D/D(0), the peak-normalized shape (seed 001)
-//   T Lambda(const T& tan_theta) const;       Smith Λ, only where a closed form exists
-//   Vec3d sample(const Vec2d& u) const;       microfacet normal m with density D(m) cosθm
-//   double pdf(const Vec3d& m) const;         = D(m) cosθm
+// Interface: ndf/distribution.h.
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 
 namespace brdfkit {
 
 template <class T> struct Beckmann {
+  static constexpr std::string_view kName = "beckmann", kTitle = "Beckmann";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h): (1+x)² e^{−x/α²} (x = tan²β) rises at
+  // β = 0 for α > 1/√2.
+  static constexpr UnitFormRange kUnitForm{"m_B", 1e-6, 0.70710678118654752,
+                                           "Beckmann, exp(-tan^2 b/m_B^2)/cos^4 b (seed 001 Table 1)"};
+  static constexpr std::string_view kHalfMaxRule = "Boost toms748 on D/D(0) = 1/2 / Eq. 9";
+  // Seed 001 Eq. 9: the α whose unit form falls to ½ at β; ln cos β through log1p for small β.
+  static std::optional<double> from_beta_half(double beta) {
+    const double s = std::sin(beta / 2);
+    return std::tan(beta) / std::sqrt(std::log(2.0) - 4 * std::log1p(-2 * s * s));
+  }
   T alpha;  // √2 × RMS slope
 
   static ParamTable params() {

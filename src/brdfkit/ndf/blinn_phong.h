@@ -1,16 +1,31 @@
 #pragma once
 // Blinn-Phong distribution: D = (N+2)/(2π) cosᴺθ (seed 001 Table 1, DESIGN.md §3).
-// Interface: see beckmann.h.
+// Interface: ndf/distribution.h.
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
-#include "brdfkit/shadowing/smith.h"
+#include "brdfkit/ndf/distribution.h"
 
 namespace brdfkit {
 
 template <class T> struct BlinnPhong {
+  static constexpr std::string_view kName = "blinn-phong", kTitle = "Blinn-Phong";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h).
+  static constexpr UnitFormRange kUnitForm{"N", 0.1, 1e12, "Blinn-Phong, cos^N b (seed 001 Table 1)"};
+  static constexpr std::string_view kHalfMaxRule = "Eq. 6/3";
+  // Seed 001 Eq. 6, cos β = 2^(−1/N), as 2 asin(sqrt((1 − cos β)/2)): exact for N up to 1e12.
+  static std::optional<double> beta_half(double n) {
+    return 2 * std::asin(std::sqrt(-std::expm1(-std::log(2.0) / n) / 2));
+  }
+  // Seed 001 Eq. 3, ln cos β through log1p.
+  static std::optional<double> from_beta_half(double beta) {
+    const double s = std::sin(beta / 2);
+    return -std::log(2.0) / std::log1p(-2 * s * s);
+  }
   T N;  // exponent (sharpness)
 
   static ParamTable params() {
@@ -32,8 +47,6 @@ template <class T> struct BlinnPhong {
     if (!(cos_theta > T(0))) return T(0);
     return pow(cos_theta, N);
   }
-  // No closed form Λ for cosᴺ (seed 001 names none).
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // pdf of c = cosθ is (N+2) c^{N+1}, CDF c^{N+2}: c = u^{1/(N+2)}.
   Vec3d sample(const Vec2d& u) const

@@ -1,17 +1,23 @@
 #pragma once
 // Exponential distribution: P22(x) = exp(−sqrt(x/α²)) / (2π α²), x = tan²θ
-// (seed 000 Table 1, DESIGN.md §3). Interface: see beckmann.h.
+// (seed 000 Table 1, DESIGN.md §3). Interface: ndf/distribution.h.
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
-#include "brdfkit/shadowing/smith.h"
+#include "brdfkit/ndf/distribution.h"
 
 namespace brdfkit {
 
 template <class T> struct Exponential {
+  static constexpr std::string_view kName = "exponential", kTitle = "exponential";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h): exp(−tanβ/α)/cos⁴β rises again
+  // beyond tanβ = 1 for α > ½.
+  static constexpr UnitFormRange kUnitForm{"alpha", 1e-6, 0.5, "exponential, exp(-tan b/alpha)/cos^4 b (seed 000 Table 1)"};
   T alpha;
 
   static ParamTable params() {
@@ -31,8 +37,6 @@ template <class T> struct Exponential {
     return P22((T(1) - c2) / c2) / (c2 * c2);
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / D(T(1)); }
-  // No closed form Λ in the seeds.
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // With s = tanθ/α the slope CDF is 1 − (1+s)e⁻ˢ (the Gamma(2) CDF): (1+s)e⁻ˢ = 1−u = q
   // inverts through the lower Lambert branch, s = −1 − W₋₁(−q/e).
@@ -50,6 +54,13 @@ template <class T> struct Exponential {
   {
     return D(m.z()) * std::max(0.0, m.z());
   }
+};
+
+// Smith Λ table over log α (a scale family: exact up to the t½ shift).
+template <> struct SmithShape<Exponential> {
+  static constexpr int kDims = 1;
+  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 8, true}}; }
+  template <class T> static std::array<T, 1> values(const Exponential<T>& d) { return {d.alpha}; }
 };
 
 }  // namespace brdfkit

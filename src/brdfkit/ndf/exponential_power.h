@@ -2,20 +2,22 @@
 // Exponential power distribution of seed 004 (Eq. 19, 26; DESIGN.md §3):
 //   P22(x) = p/(π σ² Γ(1/p)) · exp(−(x/σ²)^p),  x = tan²θ.
 // (Eq. 18 prints x/σ; Eq. 26 and the normalization ∫P22 dx = 1/π need x/σ².)
-// Jets: Γ(1/p) carries its derivative through the digamma function. Interface: see beckmann.h.
+// Jets: Γ(1/p) carries its derivative through the digamma function. Interface: ndf/distribution.h.
 #include <boost/math/special_functions/digamma.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/core/scalar_chain.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
 template <class T> struct ExponentialPower {
+  static constexpr std::string_view kName = "exponential-power", kTitle = "exponential power";
   T sigma;
   T p;
   T norm;  // p/(π σ² Γ(1/p))
@@ -44,8 +46,6 @@ template <class T> struct ExponentialPower {
     return P22((T(1) - c2) / c2) / (c2 * c2);
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / norm; }
-  // No closed form; seed 004 §5.5 tabulates G1 over (σ tanθ, p).
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // With y = (x/σ²)^p the slope CDF is the regularized lower gamma P(1/p, y), so
   // tanθ = σ · Q⁻¹(1/p, 1−u)^{1/(2p)}. Seed 004 Eq. 23 prints the exponent p/2: wrong
@@ -65,6 +65,14 @@ template <class T> struct ExponentialPower {
   {
     return D(m.z()) * std::max(0.0, m.z());
   }
+};
+
+// Smith Λ table over (log σ, log p): along σ the table is exact up to the t½ shift (Λ depends on
+// σ tanθ only, seed 004 §5.5).
+template <> struct SmithShape<ExponentialPower> {
+  static constexpr int kDims = 2;
+  static std::vector<SmithAxis> axes() { return {{1e-4, 2.0, 6, true}, {0.05, 10.0, 140, true}}; }
+  template <class T> static std::array<T, 2> values(const ExponentialPower<T>& d) { return {d.sigma, d.p}; }
 };
 
 }  // namespace brdfkit

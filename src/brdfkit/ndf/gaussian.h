@@ -4,17 +4,19 @@
 // Gauss-Kronrod. Seed 001 prints k ≈ (2 ln cos β½ − ln 2)/(2π ln cos β½), β½ = m sqrt(ln 2):
 // an approximation, not the normalization (tests/ndf measures how far it is).
 // Jets: ∂I/∂m = ∫ e^{−θ²/m²} (2θ²/m³) cosθ sinθ dθ by the same quadrature, exact to rounding.
-// Sampling by a tabulated θ CDF (theta_cdf.h). Interface: see beckmann.h.
+// Sampling by a tabulated θ CDF (theta_cdf.h). Interface: ndf/distribution.h.
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <memory>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/core/scalar_chain.h"
 #include "brdfkit/ndf/theta_cdf.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
@@ -25,6 +27,23 @@ double gaussian_ndf_integral(double m, double* dI_dm = nullptr);
 ThetaCdf gaussian_ndf_cdf(double m);
 
 template <class T> struct Gaussian {
+  static constexpr std::string_view kName = "gaussian", kTitle = "Gaussian";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h). The unit form needs no
+  // normalization (the constructor's quadrature would cost 200× a whole conversion).
+  static constexpr UnitFormRange kUnitForm{"m_G", 1e-6, 4.0,
+                                           "Gaussian (Torrance-Sparrow), exp(-b^2/m_G^2) (seed 001 Table 1)"};
+  static constexpr std::string_view kHalfMaxRule = "Eq. 7/4";
+  static double unit_form(double m, double cos_beta) {
+    const double beta = std::acos(cos_beta);
+    return std::exp(-beta * beta / (m * m));
+  }
+  // Seed 001 Eq. 7 and Eq. 4.
+  static std::optional<double> beta_half(double m) {
+    const double b = m * std::sqrt(std::log(2.0));
+    if (b >= kPi / 2) return std::nullopt;
+    return b;
+  }
+  static std::optional<double> from_beta_half(double beta) { return beta / std::sqrt(std::log(2.0)); }
   T m;     // angular width in radians (C_TS = 1/m in seed 001)
   T norm;  // k(m)
 
@@ -47,7 +66,6 @@ template <class T> struct Gaussian {
   }
   T D(const T& cos_theta) const { return norm * unit(cos_theta); }
   T P22(const T& x) const { return p22_from_d(*this, x); }
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   Vec3d sample(const Vec2d& u) const
     requires std::is_same_v<T, double>

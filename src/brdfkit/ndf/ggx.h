@@ -1,15 +1,35 @@
 #pragma once
 // Trowbridge-Reitz / GGX distribution: P22(x) = α² / (π (α² + x)²), x = tan²θ
-// (seed 000 Table 1, DESIGN.md §3). Interface: see beckmann.h.
+// (seed 000 Table 1, DESIGN.md §3). Interface: ndf/distribution.h.
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 
 namespace brdfkit {
 
 template <class T> struct Ggx {
+  static constexpr std::string_view kName = "ggx", kTitle = "GGX";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h).
+  static constexpr UnitFormRange kUnitForm{"C_TR", 1e-6, 1.0,
+                                           "Trowbridge-Reitz / GGX, [C^2/(cos^2 b (C^2-1)+1)]^2 (seed 001 Table 1)"};
+  static constexpr std::string_view kHalfMaxRule = "Eq. 8/5";
+  // Seed 001 Eq. 8 as sin²β = C²(√2 − 1)/(1 − C²): no cancellation for small C. The shape stays
+  // above ½ (D(π/2)/D(0) = C⁴) for C ≥ 2^(−1/4).
+  static std::optional<double> beta_half(double c) {
+    const double s2 = c * c * (std::sqrt(2.0) - 1) / (1 - c * c);
+    if (!(s2 < 1)) return std::nullopt;
+    return std::asin(std::sqrt(s2));
+  }
+  // Seed 001 Eq. 5 as C² = sin²β/(√2 − 1 + sin²β).
+  static std::optional<double> from_beta_half(double beta) {
+    const double s2 = std::sin(beta) * std::sin(beta);
+    return std::sqrt(s2 / (std::sqrt(2.0) - 1 + s2));
+  }
   T alpha;  // Sawicki's C_TR; Disney roughness r maps to α = r² (DESIGN.md §3)
 
   static ParamTable params() {

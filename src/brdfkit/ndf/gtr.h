@@ -7,17 +7,19 @@
 //   c_γ = (1−α²)/(−L) · t/(eᵗ − 1),
 // and t/(eᵗ−1) → 1 as γ → 1 gives the γ = 1 constant; evaluating t/expm1(t) by its series
 // near t = 0 keeps D and its γ-derivative smooth across γ = 1 (Jets included).
-// γ = 2 is GGX. Interface: see beckmann.h.
+// γ = 2 is GGX. Interface: ndf/distribution.h.
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
-#include "brdfkit/shadowing/smith.h"
+#include "brdfkit/ndf/distribution.h"
 
 namespace brdfkit {
 
 template <class T> struct Gtr {
+  static constexpr std::string_view kName = "gtr", kTitle = "GTR";
   T alpha;
   T gamma;
   T norm;  // c_γ α^{2(γ−1)} / π
@@ -57,8 +59,6 @@ template <class T> struct Gtr {
     if (!(cos_theta > T(0))) return T(0);
     return pow(alpha * alpha / denom(cos_theta), gamma);
   }
-  // Closed form only at γ = 2 (GGX); numeric for every γ so that ∂Λ/∂γ stays right.
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // Inversion in v = cos²θ: P(V ≥ v) = (α^{2(1−γ)} − s^{1−γ})/(α^{2(1−γ)} − 1), so
   // s^{1−γ} = α^{2(1−γ)}(1−u) + u, and s = α^{2(1−u)} at γ = 1 (Burley 2012, App. B).

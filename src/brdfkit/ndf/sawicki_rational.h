@@ -1,20 +1,33 @@
 #pragma once
 // Sawicki's rational distribution (Sawicki 2006, seed 001 Table 1, DESIGN.md §3):
 //   D = 96 (3+N) cosθ / (π ((1−N) cosθ + N + 3)⁴),  D(0) = 3(3+N)/(8π).
-// Sampling by a tabulated θ CDF (theta_cdf.h). Interface: see beckmann.h.
+// Sampling by a tabulated θ CDF (theta_cdf.h). Interface: ndf/distribution.h.
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <memory>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/ndf/theta_cdf.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
 template <class T> struct SawickiRational {
+  static constexpr std::string_view kName = "sawicki-rational", kTitle = "Sawicki rational";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h).
+  static constexpr UnitFormRange kUnitForm{"N_DS", 1e-3, 1e12,
+                                           "Sawicki 2006, 256 cos b/((1-N)cos b+N+3)^4 (seed 001 Table 1)"};
+  static constexpr std::string_view kHalfMaxRule = "Boost toms748 on D/D(0) = 1/2 / Eq. 10";
+  // Seed 001 Eq. 10 with d = 1 − cos β: (4 (2(1 − d))^¼ + d − 4)/d; the numerator tends to
+  // 4·2^¼ − 4, so only the denominator is small and it is exact.
+  static std::optional<double> from_beta_half(double beta) {
+    const double s = std::sin(beta / 2), d = 2 * s * s;
+    return (4 * std::pow(2 * (1 - d), 0.25) + d - 4) / d;
+  }
   T N;  // N_DS, sharpness
 
   static ParamTable params() {
@@ -36,7 +49,6 @@ template <class T> struct SawickiRational {
     return T(256) * cos_theta / (q2 * q2);
   }
   T P22(const T& x) const { return p22_from_d(*this, x); }
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   Vec3d sample(const Vec2d& u) const
     requires std::is_same_v<T, double>

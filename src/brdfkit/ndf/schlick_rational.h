@@ -3,19 +3,26 @@
 //   D = m³ x / (π cosθ (m x² − x² + m²)²),  x = cosθ + m − 1,
 // defined only for cosθ ∈ [1−m, 1] (seed 001 §2) and zero outside, where it integrates to
 // exactly 1: with y = x², 2π∫D cosθ dcosθ = m³ ∫₀^{m²} dy/((m−1)y + m²)² = 1.
-// Interface: see beckmann.h.
+// Interface: ndf/distribution.h.
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <limits>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/ndf/slope_space.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
 template <class T> struct SchlickRational {
+  static constexpr std::string_view kName = "schlick-rational", kTitle = "Schlick rational";
+  // Seed 001's unit-form comparison (analysis/ndf_conversion.h): zero for cos β < 1 − m (§2.2).
+  static constexpr UnitFormRange kUnitForm{
+      "m_B", 1e-6, 1.0,
+      "Schlick 1994, m^5 x/(cos b (m x^2-x^2+m^2)^2), x = cos b+m-1, zero for cos b < 1-m (seed 001 Table 1)"};
   T m;  // Beckmann's m_B, in (0, 1]
 
   static ParamTable params() {
@@ -39,7 +46,6 @@ template <class T> struct SchlickRational {
     const T c = T(1) - m;
     return m * (T(2) - m) / (c * c);
   }
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // Exact inversion: with y = x², P(X² ≤ y) = m y/((m−1) y + m²), so y = u m²/(m − u(m−1)).
   Vec3d sample(const Vec2d& u) const

@@ -4,19 +4,21 @@
 // With t = α + x/α this is K e^{−t} t^{−p} / π, K = 1/(α Γ(1−p, α)): the K that the published
 // Bagher fits list (data/published-fits/bagher2012-sgd.json `conventions`).
 // Γ(1−p, α) for 1−p ≤ 0 via upper_gamma.h. Jets: K carries exact derivatives (∂Γ/∂x closed
-// form, ∂Γ/∂s by quadrature). Interface: see beckmann.h.
+// form, ∂Γ/∂s by quadrature). Interface: ndf/distribution.h.
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/ndf/ggx.h"
 #include "brdfkit/core/upper_gamma.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
 template <class T> struct Sgd {
+  static constexpr std::string_view kName = "sgd", kTitle = "SGD";
   T alpha;
   T p;
   T K;  // 1/(α Γ(1−p, α))
@@ -49,8 +51,6 @@ template <class T> struct Sgd {
     const T t = alpha + x / alpha;
     return exp(-x / alpha) * pow(alpha / t, p) / (c2 * c2);
   }
-  // No closed form (seed 000 §4.3: Λ involves the confluent hypergeometric U).
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   // Exact inversion of Fθ = 1 − Γ(1−p, α + tan²θ/α)/Γ(1−p, α) (seed 000 §4.5): Boost's
   // gamma_q_inv for 1−p > 0, toms748 root finding on Γ for 1−p ≤ 0 (no regularized form).
@@ -90,5 +90,14 @@ Vec3d Sgd<T>::sample_ggx_proxy(const Vec2d& u, double* weight) const
   *weight = d_ggx > 0.0 ? D(m.z()) / d_ggx : 0.0;
   return m;
 }
+
+// Smith Λ table over (log α, p); p below 0 only as an interpolation margin (the edge cells of
+// Catmull-Rom are the weakest).
+template <> struct SmithShape<Sgd> {
+  static constexpr int kDims = 2;
+  // p below 0 only as an interpolation margin (the edge cells of Catmull-Rom are the weakest).
+  static std::vector<SmithAxis> axes() { return {{1e-6, 2.0, 49, true}, {-0.15, 1.95, 29, false}}; }
+  template <class T> static std::array<T, 2> values(const Sgd<T>& d) { return {d.alpha, d.p}; }
+};
 
 }  // namespace brdfkit

@@ -5,9 +5,10 @@
 //   ∫ (a + bθ) cosθ sinθ dθ = a sin²θ/2 + b (sin2θ/8 − θ cos2θ/4),
 // so the normalization is linear in the values and Jets carry it. Sampling by a tabulated θ CDF
 // (theta_cdf.h). params() is empty: the values are not named parameters.
-// Interface: see beckmann.h.
+// Interface: ndf/distribution.h.
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -16,14 +17,15 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/core/scalar_chain.h"
 #include "brdfkit/ndf/theta_cdf.h"
-#include "brdfkit/shadowing/smith.h"
 
 namespace brdfkit {
 
 template <class T> struct Tabulated {
+  static constexpr std::string_view kName = "tabulated", kTitle = "tabulated";
   std::vector<double> theta;  // nodes, radians, increasing
   std::vector<T> value;       // normalized D at the nodes
 
@@ -64,7 +66,6 @@ template <class T> struct Tabulated {
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / D(T(1)); }
   T P22(const T& x) const { return p22_from_d(*this, x); }
-  T Lambda(const T& tan_theta) const { return smith_lambda_numeric(*this, tan_theta); }
 
   Vec3d sample(const Vec2d& u) const
     requires std::is_same_v<T, double>

@@ -1,32 +1,24 @@
 #pragma once
 // Smith masking for any microfacet distribution (seed 000 Eq. 6, seed 004 Eq. 4–7, DESIGN.md §4).
 //
-// Contract used by every distribution in ndf/ and by the models:
+// What the models use:
+//   smith_lambda(ndf, tan_theta)          Λ: the closed form, or the numeric one
 //   smith_lambda_numeric(ndf, tan_theta)  Λ from the distribution's P22 by numerical integration,
-//                                         tabulated and interpolated so Jets carry derivatives;
-//                                         distributions without a closed form return it from Lambda().
+//                                         tabulated and interpolated so Jets carry derivatives
 //   smith_g1(ndf, cos_theta)              1/(1 + Λ(tanθ))
 //   smith_g_uncorrelated(ndf, ci, co)     G1(i) G1(o)           (the seeds' choice)
 //   smith_g_correlated(ndf, ci, co)       1/(1 + Λ(i) + Λ(o))   (height-correlated option)
 //
 // How smith_lambda_numeric picks its method: a distribution template Ndf<T> for which
-// SmithShape<Ndf> is specialized (below, in the distribution's header, or in tests) gets the
-// table of shadowing/smith_table.h, shared by all scalar types (double and every Jet), its nodes
-// integrated lazily and thread-safely on first use; coordinates outside the table's box, and
+// SmithShape<Ndf> is specialized (ndf/distribution.h: in the distribution's header, or in tests)
+// gets the table of shadowing/smith_table.h, shared by all scalar types (double and every Jet), its
+// nodes integrated lazily and thread-safely on first use; coordinates outside the table's box, and
 // distributions without a SmithShape, get the direct integral of shadowing/smith_integral.h
 // (correct, and Jet-differentiable, but ~100× slower). Jets through a table get the derivative of
 // its interpolant (C¹ Catmull-Rom), so a central difference of the double evaluation agrees.
-//
-// A SmithShape<Ndf> specialization provides
-//   static constexpr int kDims;                                 1 to 3 table coordinates
-//   static std::vector<SmithAxis> axes();                       box and grid of the coordinates
-//   template <class T> static std::array<T, kDims> values(const Ndf<T>&);   the coordinates
-// and optionally
-//   static Ndf<double> make(const double* coords);              the distribution at coordinates;
-//                                                               default Ndf<double>(coords), i.e.
-//                                                               coordinates = params() values
-//   template <class T> static T tan_edge(const T* coords);      support edge t_e (Λ = 0 for
-//                                                               tanθ ≤ t_e), for compact supports
+// smith_lambda(ndf, t) takes the distribution's closed form where it has one (Lambda()), the
+// numeric Λ otherwise; a distribution that is not normalized names the one whose Λ it has
+// (smith_form()).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,14 +26,10 @@
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/shadowing/smith_integral.h"
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/shadowing/smith_table.h"
 
 namespace brdfkit {
-
-// Primary template: no table (kDims = 0).
-template <template <class> class Ndf> struct SmithShape {
-  static constexpr int kDims = 0;
-};
 
 // The table of a distribution family (one per template, whatever the scalar type), its nodes
 // built lazily. C++ function-local statics initialise exactly once, and other threads wait for it.
@@ -81,32 +69,6 @@ template <> struct SmithShape<Ggx> {
   template <class T> static std::array<T, 1> values(const Ggx<T>& d) { return {d.alpha}; }
 };
 
-// The distributions of ndf/ without a closed-form Λ. Boxes cover each one's params() bounds;
-// node counts were chosen against the direct integral (tests/shadowing/test_smith_tables.cpp and
-// tests/microfacet_extra print the measured max |ΔG1| of each): scale parameters need few nodes,
-// since along them the table is exact up to the t½ shift. The shapes of Blinn-Phong, Gaussian,
-// GTR, Schlick rational, Sawicki rational and ABC facet sit in their own headers (their make()
-// needs the complete distribution type).
-template <class T> struct Sgd;
-template <class T> struct ExponentialPower;
-template <class T> struct Exponential;
-template <> struct SmithShape<Sgd> {
-  static constexpr int kDims = 2;
-  // p below 0 only as an interpolation margin (the edge cells of Catmull-Rom are the weakest).
-  static std::vector<SmithAxis> axes() { return {{1e-6, 2.0, 49, true}, {-0.15, 1.95, 29, false}}; }
-  template <class T> static std::array<T, 2> values(const Sgd<T>& d) { return {d.alpha, d.p}; }
-};
-template <> struct SmithShape<ExponentialPower> {
-  static constexpr int kDims = 2;
-  static std::vector<SmithAxis> axes() { return {{1e-4, 2.0, 6, true}, {0.05, 10.0, 140, true}}; }
-  template <class T> static std::array<T, 2> values(const ExponentialPower<T>& d) { return {d.sigma, d.p}; }
-};
-template <> struct SmithShape<Exponential> {
-  static constexpr int kDims = 1;
-  static std::vector<SmithAxis> axes() { return {{1e-3, 2.0, 8, true}}; }
-  template <class T> static std::array<T, 1> values(const Exponential<T>& d) { return {d.alpha}; }
-};
-
 // Λ of a distribution that has no SmithShape (or is not a one-parameter template): direct integral.
 template <class Ndf, class T> T smith_lambda_numeric(const Ndf& ndf, const T& tan_theta) {
   return smith_lambda_integral(ndf, tan_theta);
@@ -134,9 +96,19 @@ template <class Ndf, class T> T smith_tan_theta(const T& cos_theta) {
   return sqrt(std::max(T(0), T(1) - cos_theta * cos_theta)) / cos_theta;
 }
 
+// Λ(tanθ): the closed form, the form of smith_form(), or the numeric Λ.
+template <class Ndf, class T> T smith_lambda(const Ndf& ndf, const T& tan_theta) {
+  if constexpr (requires { ndf.Lambda(tan_theta); })
+    return ndf.Lambda(tan_theta);
+  else if constexpr (requires { ndf.smith_form(); })
+    return smith_lambda_numeric(ndf.smith_form(), tan_theta);
+  else
+    return smith_lambda_numeric(ndf, tan_theta);
+}
+
 template <class Ndf, class T> T smith_g1(const Ndf& ndf, const T& cos_theta) {
   if (!(cos_theta > T(0))) return T(0);
-  return T(1) / (T(1) + ndf.Lambda(smith_tan_theta<Ndf>(cos_theta)));
+  return T(1) / (T(1) + smith_lambda(ndf, smith_tan_theta<Ndf>(cos_theta)));
 }
 
 template <class Ndf, class T> T smith_g_uncorrelated(const Ndf& ndf, const T& cos_i, const T& cos_o) {
@@ -146,7 +118,7 @@ template <class Ndf, class T> T smith_g_uncorrelated(const Ndf& ndf, const T& co
 // Height-correlated form 1/(1 + Λ(i) + Λ(o)) (Heitz 2014 Eq. 99, cited by seed 004 §3; DESIGN.md §4).
 template <class Ndf, class T> T smith_g_correlated(const Ndf& ndf, const T& cos_i, const T& cos_o) {
   if (!(cos_i > T(0) && cos_o > T(0))) return T(0);
-  return T(1) / (T(1) + ndf.Lambda(smith_tan_theta<Ndf>(cos_i)) + ndf.Lambda(smith_tan_theta<Ndf>(cos_o)));
+  return T(1) / (T(1) + smith_lambda(ndf, smith_tan_theta<Ndf>(cos_i)) + smith_lambda(ndf, smith_tan_theta<Ndf>(cos_o)));
 }
 
 }  // namespace brdfkit

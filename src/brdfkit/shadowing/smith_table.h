@@ -33,16 +33,10 @@
 #include <mutex>
 #include <vector>
 
+#include "brdfkit/ndf/distribution.h"
 #include "brdfkit/shadowing/smith_integral.h"
 
 namespace brdfkit {
-
-struct SmithAxis {
-  double lo;
-  double hi;
-  int n;           // nodes, ≥ 4
-  bool log_scale;  // interpolate in log(value)
-};
 
 class SmithLambdaTable {
  public:

@@ -11,7 +11,7 @@
 
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/models/model_sets.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/load.h"
 #include "support/test_util.h"
 
@@ -35,7 +35,7 @@ TEST(FitStarts, EverySingleLobeFitReportsTheMetricOfItsParametersOnKrylonBlue) {
   }
 }
 
-// The scan vs the defaults (FitOptions::scan_start = false) for the models whose Cornell errors
+// The scan vs the defaults (FitSettings::scan_start = false) for the models whose Cornell errors
 // looked like stalls: the scan's fit is never worse (measured: equal on 7 of 9, garnet_red ward
 // 0.3732 → 0.3663 and blinn-phong 0.4590 → 0.4526). Ward's 0.323 on krylon_blue is its optimum,
 // not a stall (16 random starts give the same), and Ashikhmin-Shirley's 1.02 was the projection's
@@ -48,7 +48,7 @@ TEST(FitStarts, ScannedStartIsNeverWorseThanTheDefaultsOnCornell) {
     for (const char* name : {"ward", "blinn-phong", "ashikhmin-shirley"}) {
       SCOPED_TRACE(std::string(file) + " " + name);
       const Model& m = model_by_name(name);
-      FitOptions defaults;
+      FitSettings defaults;
       defaults.scan_start = false;
       const FitResult plain = fit_model(m, metric, defaults), scanned = fit_model(m, metric, {});
       std::printf("%-16s %-18s ngan from the defaults %.6g, from the scan %.6g\n", file, name, plain.metric_value,

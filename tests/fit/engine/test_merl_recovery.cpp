@@ -1,5 +1,5 @@
 // Exact recovery from MERL tables (issue #5 acceptance): a material tabulated from known
-// parameters is fitted back from the default start (FitOptions{}: start 0 is the best point of the
+// parameters is fitted back from the default start (FitSettings{}: start 0 is the best point of the
 // start scan, fit/start_scan.h, which includes the table's defaults) under a metric whose domain
 // is the table's own cells (fit/metric_cells.h), so the optimum is the truth itself: relative
 // error < 1e-3 on every fitted parameter without noise, with or without missing cells; with 1 %
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "brdfkit/fit/metric/metric.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/merl_tabulate.h"
 #include "support/merl_cases.h"
 

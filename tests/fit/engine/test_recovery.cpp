@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "support/fit_test_util.h"
 
 namespace brdfkit::fit {
@@ -124,9 +124,9 @@ TEST(Recovery, MultiStartIsDeterministicAndNeverWorseThanOneStart) {
   const ParamValues want = truth(m, 0.3);
   const test::AnalyticMeasured data(m, want);
   const Metric metric = make_metric("ngan", data, {4});
-  const FitResult one = fit_model(m, metric, {1, 5});
-  const FitResult a = fit_model(m, metric, {3, 5});
-  const FitResult b = fit_model(m, metric, {3, 5});
+  const FitResult one = fit_model(m, metric, FitSettings{.starts = 1, .seed = 5});
+  const FitResult a = fit_model(m, metric, FitSettings{.starts = 3, .seed = 5});
+  const FitResult b = fit_model(m, metric, FitSettings{.starts = 3, .seed = 5});
   EXPECT_EQ(a.values.values, b.values.values);
   EXPECT_EQ(a.metric_value, b.metric_value);
   EXPECT_LE(a.metric_value, one.metric_value);
@@ -136,7 +136,7 @@ TEST(Recovery, ReportOnlyMetricAndBadOptionsAreInputErrors) {
   const Model& m = model_by_name("lambert");
   const test::AnalyticMeasured data(m, ParamValues::defaults(m.params()));
   EXPECT_THROW(fit_model(m, make_metric("hp-rmse", data, {8}), {}), InputError);
-  EXPECT_THROW(fit_model(m, make_metric("ngan", data, {8}), {0}), InputError);
+  EXPECT_THROW(fit_model(m, make_metric("ngan", data, {8}), FitSettings{.starts = 0}), InputError);
 }
 
 }  // namespace

@@ -1,14 +1,16 @@
-// The fast paths of RGL metric domains (RglBrdf::eval_from, metric_grid's lookup_row) give the
+// The fast paths of RGL metric domains (RglBrdf::eval_row, MeasuredBrdf::eval_row) give the
 // values of pair-by-pair RglBrdf::eval, and every metric's value on real RGL data is the one the
 // code before these paths gave (pinned from commit 05d488f). Skipped when the data are absent.
 #include <gtest/gtest.h>
+
+#include <thread>
 
 #include <cmath>
 #include <map>
 #include <random>
 
 #include "brdfkit/fit/metric/metric.h"
-#include "brdfkit/fit/metric/metric_cache.h"
+#include "brdfkit/fit/metric/metric_store.h"
 #include "brdfkit/fit/metric/metric_grid.h"
 #include "brdfkit/measured/rgl_tensor.h"
 #include "brdfkit/models/model.h"
@@ -39,7 +41,7 @@ ParamValues ibiza_fit(const Model& model) {
 
 }  // namespace
 
-// eval_from must be eval() pair by pair, bit for bit: wi with and without azimuth, at the normal,
+// eval_row must be eval() pair by pair, bit for bit: wi with and without azimuth, at the normal,
 // below the horizon; wo anywhere, including below the horizon and the mirror direction.
 TEST(RglSpeedpath, EvalFromIsEvalPairByPair) {
   BRDFKIT_REQUIRE_DATA("rgl");
@@ -55,7 +57,7 @@ TEST(RglSpeedpath, EvalFromIsEvalPairByPair) {
       wo.push_back(reflect(wi, Vec3d(0, 0, 1)).normalized());
       wo.push_back(Vec3d(0, 0, 1));
       std::vector<std::optional<Rgb>> batch;
-      b.eval_from(wi, wo, batch);
+      b.eval_row(wi, wo, batch);
       ASSERT_EQ(batch.size(), wo.size());
       size_t valid = 0;
       for (size_t k = 0; k < wo.size(); ++k) {
@@ -142,10 +144,10 @@ TEST(RglSpeedpath, MetricValuesPinned) {
   }
 }
 
-// While a MetricCache lives, make_metric hands out the domain it built first (the same values, one
-// shared object through shared_metric); without one every call builds afresh. Either way the values
-// equal an uncached build's.
-TEST(RglSpeedpath, CacheSharesDomainsOnlyWhileAlive) {
+// A MetricStore builds each (metric, options) domain once and hands out that one object; its
+// values equal a fresh build's, and so does a metric that takes its albedo norm from the store.
+// Concurrent first requests of one key wait for a single build.
+TEST(RglSpeedpath, StoreSharesDomainsAndTheirValuesEqualFreshBuilds) {
   BRDFKIT_REQUIRE_DATA("rgl");
   const RglBrdf b(rgl_file("satin_rosaline_rgb"));
   const Model& model = model_by_name("cook-torrance-beckmann");
@@ -153,21 +155,19 @@ TEST(RglSpeedpath, CacheSharesDomainsOnlyWhileAlive) {
   const MetricOptions coarse{3};
   const double ngan = make_metric("ngan", b, coarse).value(model, values);
   const double bagher = make_metric("bagher", b, coarse).value(model, values);
-  EXPECT_NE(shared_metric("ngan", b, coarse), shared_metric("ngan", b, coarse));  // no cache: two builds
+  MetricStore store(b);
+  std::vector<std::shared_ptr<const Metric>> got(4);
   {
-    const MetricCache cache(b);
-    const auto first = shared_metric("ngan", b, coarse);
-    EXPECT_EQ(first, shared_metric("ngan", b, coarse));
-    {
-      const MetricCache nested(b);  // a second owner of the same data shares the entry
-      EXPECT_EQ(first, shared_metric("ngan", b, coarse));
-    }
-    EXPECT_EQ(first, shared_metric("ngan", b, coarse));
-    EXPECT_NE(first, shared_metric("ngan", b, MetricOptions{4}));  // other options: another domain
-    EXPECT_EQ(first->value(model, values), ngan);
-    EXPECT_EQ(make_metric("ngan", b, coarse).value(model, values), ngan);
-    EXPECT_EQ(make_metric("bagher", b, coarse).value(model, values), bagher);  // albedo norm from the cache
-    EXPECT_EQ(first->sample_count(), make_metric("ngan", b, coarse).sample_count());
+    std::vector<std::thread> threads;
+    for (size_t t = 0; t < got.size(); ++t) threads.emplace_back([&, t] { got[t] = store.metric("ngan", coarse); });
+    for (auto& t : threads) t.join();
   }
-  EXPECT_NE(shared_metric("ngan", b, coarse), shared_metric("ngan", b, coarse));
+  for (const auto& m : got) EXPECT_EQ(m, got[0]);
+  EXPECT_EQ(store.metric("ngan", coarse), got[0]);
+  EXPECT_NE(store.metric("ngan", MetricOptions{4}), got[0]);  // other options: another domain
+  EXPECT_EQ(got[0]->value(model, values), ngan);
+  EXPECT_EQ(store.metric("bagher", coarse)->value(model, values), bagher);  // albedo norm from the store
+  EXPECT_EQ(got[0]->sample_count(), make_metric("ngan", b, coarse).sample_count());
+  EXPECT_THROW(store.metric("no-such-metric", coarse), InputError);
+  EXPECT_THROW(store.metric("no-such-metric", coarse), InputError);  // the error is kept, not a crash
 }

@@ -1,13 +1,13 @@
-// The fast path of the full-size MERL fit (issue #5 speed criterion, DESIGN.md §12) changes no
+// The fast path of the full-size MERL fit (DESIGN.md §12) changes no
 // number: each shortcut is checked to the bit against the plain computation it replaces.
-//   - Model::eval_batch_pair (one pass for a Fresnel-paired colour's two bases) equals two
-//     eval_batch calls, for every parameter of every registered model;
+//   - PairedEvaluation::eval_batch_pair (one pass for a Fresnel-paired colour's two bases) equals
+//     two eval_batch calls, for every parameter of every registered model that offers it;
 //   - Cook-Torrance/Beckmann's batch loops skip Λ where G1 = 1 to the last bit (SmithUnitBelow,
 //     models/cook_torrance.h): equal to eval<double> at every pair, across the cut-off;
-//   - the cell domain's directions (fit/metric_cells.cpp, sines and cosines once per axis) equal
+//   - the cell domain's directions (fit/metric/metric_cells.cpp, sines and cosines once per axis) equal
 //     merl::cell_directions of every cell;
 //   - a fit through the paired pass gives the same parameters, to the bit, as one through two
-//     plain passes (the evaluation cache of fit/variable_projection.cpp included).
+//     plain passes (fit/engine/projected_objective.cpp, its cache of bases included).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,11 +21,12 @@
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/fit/metric/metric_cells.h"
 #include "brdfkit/fit/metric/metric_definition.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/models/cook_torrance_catalogue.h"
 #include "brdfkit/models/model.h"
+#include "brdfkit/models/paired_evaluation.h"
 
 namespace brdfkit {
 namespace {
@@ -60,6 +61,8 @@ TEST(SpeedPath, PairEvaluationEqualsTwoBatchCalls) {
   const Pairs pairs = random_pairs(400, 3);
   int custom = 0, checked = 0;
   for (const Model* m : all_models()) {
+    const auto* paired = dynamic_cast<const PairedEvaluation*>(m);
+    if (!paired) continue;
     const ParamTable& t = m->params();
     const ParamValues v = ParamValues::defaults(t);
     for (size_t p = 0; p < t.size(); ++p) {
@@ -72,7 +75,9 @@ TEST(SpeedPath, PairEvaluationEqualsTwoBatchCalls) {
         std::vector<double> want_a(pairs.size()), want_b(pairs.size()), got_a(pairs.size()), got_b(pairs.size());
         m->eval_batch(pa.data(), c, pairs.size(), pairs.soa(), want_a.data());
         m->eval_batch(pb.data(), c, pairs.size(), pairs.soa(), want_b.data());
-        m->eval_batch_pair(v.channel(c), c, int(p), a, b, pairs.size(), pairs.soa(), got_a.data(), got_b.data());
+        if (!paired->eval_batch_pair(v.channel(c), c, int(p), a, b, pairs.size(), pairs.soa(), got_a.data(),
+                                     got_b.data()))
+          continue;
         for (size_t k = 0; k < pairs.size(); ++k) {
           ASSERT_TRUE(same_bits(got_a[k], want_a[k])) << m->name() << " " << t[p].name << " pair " << k;
           ASSERT_TRUE(same_bits(got_b[k], want_b[k])) << m->name() << " " << t[p].name << " pair " << k;
@@ -90,7 +95,6 @@ TEST(SpeedPath, PairEvaluationEqualsTwoBatchCalls) {
 // Pairs with θi or θo just inside and outside tanθ = 1/(6.5 α), and random ones.
 TEST(SpeedPath, BeckmannBatchLoopsEqualEvalAcrossTheMaskingCutoff) {
   using M = CookTorranceBeckmann;
-  const ModelAdapter<M> model;
   const ParamTable t = M::params();
   int skipped_side = 0, total = 0;
   for (double alpha : {1e-3, 0.01, 0.05, 0.12, 0.3, 0.9, 2.0}) {
@@ -110,7 +114,9 @@ TEST(SpeedPath, BeckmannBatchLoopsEqualEvalAcrossTheMaskingCutoff) {
     M::eval_batch(p, 0, pairs.size(), pairs.v[0].data(), pairs.v[1].data(), pairs.v[2].data(), pairs.v[3].data(),
                   pairs.v[4].data(), pairs.v[5].data(), batch.data());
     const int f0 = find_param(t, "F0");
-    model.eval_batch_pair(p, 0, f0, 0.0, 1.0, pairs.size(), pairs.soa(), pa.data(), pb.data());
+    ASSERT_TRUE(M::eval_batch_pair(p, 0, f0, 0.0, 1.0, pairs.size(), pairs.v[0].data(), pairs.v[1].data(),
+                                   pairs.v[2].data(), pairs.v[3].data(), pairs.v[4].data(), pairs.v[5].data(), pa.data(),
+                                   pb.data()));
     std::vector<double> q0(p, p + t.size()), q1 = q0;
     q0[size_t(f0)] = 0.0;
     q1[size_t(f0)] = 1.0;
@@ -177,8 +183,8 @@ TEST(SpeedPath, CellDomainDirectionsAreMerlCellCentres) {
   check_cell_domain(3, false);
 }
 
-// The runtime model with its eval_batch_pair hidden: variable projection then makes two plain
-// eval_batch passes for a Fresnel pair (Model's default).
+// The runtime model without its paired evaluation: variable projection then makes two plain
+// eval_batch passes for a Fresnel pair.
 class WithoutPairPass final : public Model {
  public:
   explicit WithoutPairPass(const Model& m) : m_(m) {}

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/fit/metric/metric.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/alta_slice.h"
 #include "support/fit_test_util.h"
 #include "support/test_util.h"

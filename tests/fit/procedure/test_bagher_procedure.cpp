@@ -45,9 +45,9 @@ TEST(BagherProcedure, RecoversPerChannelParametersFromExactData) {
                                                  {"F0", Rgb(0.9, 0.5, 0.2)},
                                                  {"F1", Rgb(0.1, -0.2, 0.05)}});
   const test::AnalyticMeasured data(m, want);
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 8;  // only the reported bagher metric uses the grid
-  const ProcedureResult r = run_procedure("bagher", m, data, opt);
+  const ProcedureResult r = run_procedure(m, data, test::with_procedure(opt, "bagher"));
   EXPECT_EQ(r.metric, "bagher");
   const auto err = recovery_errors(m, want, r.fit.values);
   for (size_t k = 0; k < 6; ++k) EXPECT_LT(err[k], 1e-6) << kNames[k];
@@ -67,9 +67,9 @@ TEST(BagherProcedure, RecoversPublishedSgdFitsFromTheirMerlSurrogates) {
     SCOPED_TRACE(material);
     const Brdf truth = fits.brdf(material);
     const MerlBrdf data(merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return truth.eval(wi, wo); }), material);
-    ProcedureOptions opt;
+    FitSettings opt;
     opt.coarsen = 8;  // only the reported bagher metric uses the grid
-    const ProcedureResult r = run_procedure("bagher", truth.model(), data, opt);
+    const ProcedureResult r = run_procedure(truth.model(), data, test::with_procedure(opt, "bagher"));
     const auto err = recovery_errors(truth.model(), truth.values(), r.fit.values);
     std::printf("%s: max relative error kd %.2g ks %.2g alpha %.2g p %.2g F0 %.2g F1 %.2g; bagher %.3g\n", material,
                 err[0], err[1], err[2], err[3], err[4], err[5], r.fit.metric_value);
@@ -100,7 +100,7 @@ TEST(BagherProcedure, MissingSliceIsAnError) {
   const test::AnalyticMeasured full(m, ParamValues::defaults(m.params()));
   const NoMirrorSlice data(full);
   try {
-    run_procedure("bagher", m, data, {});
+    run_procedure(m, data, FitSettings{.procedure = "bagher"});
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("θh = 0 slice"), std::string::npos) << e.what();

@@ -39,7 +39,7 @@ TEST(HpProcedure, TwoStepNeedsADiffractionLobe) {
   const Model& m = model_by_name("cook-torrance-ggx");
   const test::AnalyticMeasured data(m, ParamValues::defaults(m.params()));
   try {
-    run_procedure("hp-2step", m, data, {});
+    run_procedure(m, data, FitSettings{.procedure = "hp-2step"});
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("kd, kw and a"), std::string::npos) << e.what();
@@ -52,9 +52,9 @@ TEST(HpProcedure, TwoStepOnAMaterialWithDiffraction) {
   const test::AnalyticMeasured data(m, want);
   // The HP model's evaluation is costly (a Γ per call): a coarse grid, and hp-1step's ten
   // restarts are left to the GGX test of test_procedures.cpp.
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 8;
-  const ProcedureResult two = run_procedure("hp-2step", m, data, opt);
+  const ProcedureResult two = run_procedure(m, data, test::with_procedure(opt, "hp-2step"));
   const double zero = make_metric("hp-rmse", data, {8}).value(m, [&] {
     ParamValues v = want;
     for (auto& ch : v.values) ch[1] = ch[2] = ch[0] = 0.0;  // kd, ks, kw = 0: the data's own norm

@@ -75,9 +75,9 @@ TEST(HpTwoStep, RecoversTheReflectionLobeWhereTheGridResolvesIt) {
   const Model& m = model_by_name("holzschuch-pacanowski");
   const ParamValues want = test::hp_diffraction_material(m);
   const test::AnalyticMeasured data(m, want);
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 4;
-  const ProcedureResult two = run_procedure("hp-2step", m, data, opt);
+  const ProcedureResult two = run_procedure(m, data, test::with_procedure(opt, "hp-2step"));
   for (const auto& s : two.steps) std::printf("hp-2step, coarsen 4: %s\n", s.c_str());
   const double zero = make_metric("hp-rmse", data, {4}).value(m, [&] {
     ParamValues v = want;
@@ -102,14 +102,14 @@ TEST(HpTwoStep, SigmaAtItsBoundWasALocalMinimumOnTheCoarseGrid) {
   const Model& m = model_by_name("holzschuch-pacanowski");
   const ParamValues want = test::hp_diffraction_material(m);
   const test::AnalyticMeasured data(m, want);
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 8;
-  const ProcedureResult two = run_procedure("hp-2step", m, data, opt);
+  const ProcedureResult two = run_procedure(m, data, test::with_procedure(opt, "hp-2step"));
   std::vector<bool> held(m.params().size(), false);
   for (const char* name : {"kd", "kw", "a"}) held[size_t(find_param(m.params(), name))] = true;
   const FixedParams step2(m, held, two.fit.values);
   const Metric e1 = make_metric("low-e1", data, {8});
-  FitOptions from_defaults;
+  FitSettings from_defaults;
   from_defaults.scan_start = false;
   const FitResult r = fit_model(step2, e1, from_defaults);
   const ParamValues defaults_result = step2.merged(r.values);

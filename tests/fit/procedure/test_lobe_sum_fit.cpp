@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/measured/merl_tabulate.h"
 #include "brdfkit/models/model.h"

@@ -53,9 +53,9 @@ TEST(LowE2, RecoversLowSmoothFromItsMerlTable) {
                                                  {"C", Rgb::Constant(0.8)},
                                                  {"eta", Rgb::Constant(1.7)}});
   const MerlBrdf data(sparse_table(Brdf(m, want), kCoarsen), "low-smooth");
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = kCoarsen;
-  const ProcedureResult r = run_procedure("low-e2", m, data, opt);
+  const ProcedureResult r = run_procedure(m, data, test::with_procedure(opt, "low-e2"));
   double worst = 0;
   for (const char* name : {"kd", "A", "B", "C", "eta"})
     for (int c = 0; c < 3; ++c) {
@@ -85,9 +85,9 @@ TEST(LowE2, FitOfSgdSurrogateReachesThePublishedSmoothE2) {
     const Metric e2 = make_metric("low-e2", data, {kCoarsen});
     const Brdf published = smooth.brdf(material);
     const double e2_published = e2.value(published.model(), published.values());
-    ProcedureOptions opt;
+    FitSettings opt;
     opt.coarsen = kCoarsen;
-    const ProcedureResult r = run_procedure("low-e2", low, data, opt);
+    const ProcedureResult r = run_procedure(low, data, test::with_procedure(opt, "low-e2"));
     EXPECT_LE(r.fit.metric_value, e2_published);
     // The fit's own sum is the metric's (summed in another order).
     EXPECT_NEAR(r.fit.metric_value, e2.value(low, r.fit.values), 1e-12 * r.fit.metric_value);
@@ -117,9 +117,9 @@ TEST(BagherRecovery, PublishedFitsWithANegativeLobeAtNormalIncidence) {
         table.set_raw(merl::cell_offset(c), v[0] / merl::kScale[0], v[1] / merl::kScale[1], v[2] / merl::kScale[2]);
       }
     const MerlBrdf data(std::move(table), material);
-    ProcedureOptions opt;
+    FitSettings opt;
     opt.coarsen = 8;
-    const ProcedureResult r = run_procedure("bagher", truth.model(), data, opt);
+    const ProcedureResult r = run_procedure(truth.model(), data, test::with_procedure(opt, "bagher"));
     const Model& m = truth.model();
     double worst = 0;
     for (int c = 0; c < 3; ++c)

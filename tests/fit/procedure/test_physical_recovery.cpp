@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "brdfkit/fit/metric/metric.h"
-#include "brdfkit/fit/engine/variable_projection.h"
+#include "brdfkit/fit/engine/fit_model.h"
 #include "support/merl_cases.h"
 
 namespace brdfkit::fit {
@@ -98,7 +98,7 @@ Errors fit_case(const Case& k, double missing, double noise, bool scan_start) {
   const MerlBrdf data(tabulate_cells(m, want, k.coarsen, missing, noise), std::string(k.model) + ".binary");
   const Metric metric = make_metric("ngan", data, {k.coarsen});
   EXPECT_TRUE(metric.on_cells());
-  FitOptions options;
+  FitSettings options;
   options.scan_start = scan_start;
   const FitResult r = fit_model(m, metric, options);
   const Errors e = errors(m, want, r.values);

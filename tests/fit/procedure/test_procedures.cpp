@@ -19,38 +19,42 @@ double param(const Model& m, const ParamValues& v, const char* name, int c = 0) 
 }
 
 TEST(Procedures, IdsInStableOrderWithTheirMetrics) {
-  const auto ids = procedure_ids();
+  const auto ids = procedure_registry().names();
   ASSERT_EQ(ids.size(), 6u);
   const char* want[] = {"ngan", "bagher", "low-e1", "low-e2", "hp-2step", "hp-1step"};
   for (size_t i = 0; i < ids.size(); ++i) EXPECT_EQ(ids[i], want[i]);
-  EXPECT_EQ(procedure_metric("ngan"), "ngan");
-  EXPECT_EQ(procedure_metric("bagher"), "bagher");
-  EXPECT_EQ(procedure_metric("low-e1"), "low-e1");
-  EXPECT_EQ(procedure_metric("low-e2"), "low-e2");
-  EXPECT_EQ(procedure_metric("hp-2step"), "hp-rmse");
-  EXPECT_EQ(procedure_metric("hp-1step"), "hp-rmse");
+  auto metric_of = [](const char* id) { return fitting_metric(FitSettings{.procedure = id}); };
+  EXPECT_EQ(metric_of("ngan"), "ngan");
+  EXPECT_EQ(metric_of("bagher"), "bagher");
+  EXPECT_EQ(metric_of("low-e1"), "low-e1");
+  EXPECT_EQ(metric_of("low-e2"), "low-e2");
+  EXPECT_EQ(metric_of("hp-2step"), "hp-rmse");
+  EXPECT_EQ(metric_of("hp-1step"), "hp-rmse");
+  EXPECT_EQ(fitting_metric(FitSettings{.procedure = "hp-2step", .metric = "low-e2"}), "low-e2");
+  EXPECT_EQ(fitting_metric(FitSettings{}), "ngan");
 }
 
 TEST(Procedures, UnknownIdAndBadOptionsAreInputErrorsNamingThem) {
   const Model& m = model_by_name("lambert");
   const test::AnalyticMeasured data(m, ParamValues::defaults(m.params()));
   try {
-    run_procedure("levenberg", m, data, {});
+    run_procedure(m, data, FitSettings{.procedure = "levenberg"});
     FAIL() << "no exception";
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("procedure 'levenberg'"), std::string::npos) << what;
+    EXPECT_EQ(what.rfind("procedure: ", 0), 0u) << what;  // a SettingError names the setting first
     EXPECT_NE(what.find("ngan, bagher, low-e1, low-e2, hp-2step, hp-1step"), std::string::npos) << what;
   }
-  EXPECT_THROW(procedure_metric("nope"), InputError);
-  ProcedureOptions bad;
+  EXPECT_THROW(fitting_metric(FitSettings{.procedure = "nope"}), SettingError);
+  FitSettings bad;
   bad.metric = "l2";
-  EXPECT_THROW(run_procedure("ngan", m, data, bad), InputError);
+  EXPECT_THROW(run_procedure(m, data, test::with_procedure(bad, "ngan")), InputError);
   bad = {};
   bad.coarsen = 0;
-  EXPECT_THROW(run_procedure("ngan", m, data, bad), InputError);
+  EXPECT_THROW(run_procedure(m, data, test::with_procedure(bad, "ngan")), InputError);
   // The bagher procedure needs the Bagher Fresnel term's F0, F1 (seed 000 Eq. 11).
-  EXPECT_THROW(run_procedure("bagher", model_by_name("cook-torrance-beckmann"), data, {}), InputError);
+  EXPECT_THROW(run_procedure(model_by_name("cook-torrance-beckmann"), data, FitSettings{.procedure = "bagher"}), InputError);
 }
 
 // `ngan` and `low-e*` are presets: the same numbers as fit_model under that metric.
@@ -60,11 +64,11 @@ TEST(Procedures, NganAndLowAreFitModelUnderTheirMetric) {
   const test::AnalyticMeasured data(m, want);
   for (const char* id : {"ngan", "low-e1", "low-e2"}) {
     SCOPED_TRACE(id);
-    ProcedureOptions opt;
+    FitSettings opt;
     opt.coarsen = 4;
     int messages = 0;
-    opt.progress = [&](std::string_view) { ++messages; };
-    const ProcedureResult r = run_procedure(id, m, data, opt);
+    opt.procedure = id;
+    const ProcedureResult r = run_procedure(m, data, opt, [&](std::string_view) { ++messages; });
     const FitResult direct = fit_model(m, make_metric(id, data, {4}), {});
     EXPECT_EQ(r.metric, id);
     EXPECT_EQ(r.fit.values.values, direct.values.values);
@@ -74,10 +78,10 @@ TEST(Procedures, NganAndLowAreFitModelUnderTheirMetric) {
     EXPECT_GE(messages, 1);
   }
   // Another metric replaces the procedure's own.
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 4;
   opt.metric = "bagher";
-  const ProcedureResult r = run_procedure("ngan", m, data, opt);
+  const ProcedureResult r = run_procedure(m, data, test::with_procedure(opt, "ngan"));
   EXPECT_EQ(r.metric, "bagher");
   EXPECT_EQ(r.fit.metric_value, fit_model(m, make_metric("bagher", data, {4}), {}).metric_value);
 }
@@ -99,10 +103,10 @@ TEST(Procedures, PerChannelShapeRecoversADifferentShapePerChannel) {
   for (const ParamSpec& s : wrapped.params()) EXPECT_EQ(s.scope, Scope::PerChannel) << s.name;
   EXPECT_EQ(m.params()[size_t(ia)].scope, Scope::Shared);  // the wrapped model is untouched
 
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 4;
   opt.per_channel_shape = true;
-  const ProcedureResult per = run_procedure("ngan", m, data, opt);
+  const ProcedureResult per = run_procedure(m, data, test::with_procedure(opt, "ngan"));
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(param(m, per.fit.values, "alpha", c), alpha[c], 1e-5 * alpha[c]) << c;
     EXPECT_NEAR(param(m, per.fit.values, "ks", c), param(m, want, "ks", c), 1e-4) << c;
@@ -110,7 +114,7 @@ TEST(Procedures, PerChannelShapeRecoversADifferentShapePerChannel) {
   }
   EXPECT_LT(per.fit.metric_value, 1e-7);
   opt.per_channel_shape = false;
-  const ProcedureResult shared = run_procedure("ngan", m, data, opt);
+  const ProcedureResult shared = run_procedure(m, data, test::with_procedure(opt, "ngan"));
   const double a = param(m, shared.fit.values, "alpha");
   for (int c = 1; c < 3; ++c) EXPECT_EQ(param(m, shared.fit.values, "alpha", c), a);
   EXPECT_GT(a, alpha[0]);
@@ -128,15 +132,15 @@ TEST(Procedures, HpOneStepFitsOnTheEq29IntegrandAndReportsHpRmse) {
   const ParamValues want = make_values(
       m, {{"kd", Rgb(0.1, 0.2, 0.3)}, {"ks", Rgb(0.8, 0.6, 0.5)}, {"alpha", Rgb::Constant(0.25)}, {"F0", Rgb(0.05, 0.04, 0.08)}});
   const test::AnalyticMeasured data(m, want);
-  ProcedureOptions opt;
+  FitSettings opt;
   opt.coarsen = 4;
-  const ProcedureResult r = run_procedure("hp-1step", m, data, opt);
+  const ProcedureResult r = run_procedure(m, data, test::with_procedure(opt, "hp-1step"));
   EXPECT_EQ(r.metric, "hp-rmse");
   EXPECT_NEAR(param(m, r.fit.values, "alpha"), 0.25, 1e-4);
   EXPECT_LT(r.fit.metric_value, 1e-5);
   EXPECT_EQ(r.fit.metric_value, make_metric("hp-rmse", data, {4}).value(m, r.fit.values));
   // Ten restarts, deterministic.
-  const ProcedureResult again = run_procedure("hp-1step", m, data, opt);
+  const ProcedureResult again = run_procedure(m, data, test::with_procedure(opt, "hp-1step"));
   EXPECT_EQ(again.fit.values.values, r.fit.values.values);
 }
 

@@ -19,8 +19,8 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
 #include "brdfkit/fit/metric/metric.h"
-#include "brdfkit/fit/metric/metric_cache.h"
 #include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/fit/metric/metric_store.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/models/published_fits.h"
 
@@ -64,7 +64,7 @@ struct Material {
   bool sha_done = false, loaded = false, published_done = false;
   std::string sha, error;
   std::unique_ptr<MeasuredBrdf> data;
-  std::unique_ptr<MetricCache> cache;  // every fit of the material reuses its domains (metric_cache.h)
+  std::unique_ptr<MetricStore> store;  // every fit of the material reuses its domains
   std::map<std::string, std::shared_ptr<const Metric>> metrics;
   std::map<std::string, std::string> undefined;  // metric id → why the data cannot answer it
   std::optional<double> published;
@@ -100,9 +100,9 @@ std::optional<nlohmann::json> read_json(const fs::path& file) {
 class Batch {
  public:
   Batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models, const fs::path& out_dir,
-        const BatchOptions& opt)
-      : inputs_(inputs), models_(models), out_(out_dir), opt_(opt), materials_(inputs.size()) {
-    metric_ = fitting_metric(opt.job);
+        const BatchSettings& opt, const BatchLog& log)
+      : inputs_(inputs), models_(models), out_(out_dir), opt_(opt), log_(log), materials_(inputs.size()) {
+    metric_ = fitting_metric(opt.fit);
     report_.push_back(metric_);
     for (const std::string& id : opt.report)
       if (std::find(report_.begin(), report_.end(), id) == report_.end()) report_.push_back(id);
@@ -130,7 +130,7 @@ class Batch {
     for (auto& t : pool) t.join();
 
     BatchSummary s;
-    s.procedure = opt_.job.procedure;
+    s.procedure = opt_.fit.procedure;
     s.fit_metric = metric_;
     for (const auto& in : inputs_) s.materials.push_back(in.material);
     for (const Model* m : models_) s.models.emplace_back(m->name());
@@ -151,9 +151,9 @@ class Batch {
 
  private:
   void log(const std::string& line) {
-    if (!opt_.log) return;
+    if (!log_) return;
     std::lock_guard lock(log_mu_);
-    opt_.log(line);
+    log_(line);
   }
 
   void run_one(size_t k) {
@@ -177,7 +177,7 @@ class Batch {
       std::lock_guard lock(mat.mu);
       if (--mat.remaining == 0) {
         mat.metrics.clear();
-        mat.cache.reset();
+        mat.store.reset();
         mat.data.reset();
       }
     }
@@ -221,10 +221,10 @@ class Batch {
       mat.error = e.what();
       throw;
     }
-    mat.cache = std::make_unique<MetricCache>(*mat.data);
+    mat.store = std::make_unique<MetricStore>(*mat.data);
     for (const std::string& id : report_) {
       try {
-        mat.metrics[id] = shared_metric(id, *mat.data, MetricOptions{opt_.job.coarsen});
+        mat.metrics[id] = mat.store->metric(id, MetricOptions{opt_.fit.coarsen});
       } catch (const InputError& e) {  // MetricUndefined and grids a coarsening cannot make
         mat.undefined[id] = e.what();
       }
@@ -253,7 +253,7 @@ class Batch {
 
   void fit_or_resume(const BatchInput& in, const Model& model, Material& mat, BatchRow& row, const fs::path& json) {
     const std::string sha = checksum(in, mat);
-    if (auto saved = read_json(json); saved && fit_job_matches(*saved, row.model, sha, opt_.job, report_)) {
+    if (auto saved = read_json(json); saved && fit_job_matches(*saved, row.model, sha, opt_.fit, report_)) {
       row.status = FitStatus::Resumed;
       row.json = json.string();
       for (const std::string& id : report_) {
@@ -266,15 +266,15 @@ class Batch {
       row.converged = f.value("converged", false);
       return;
     }
-    const MeasuredBrdf* data = nullptr;
+    MetricStore* store = nullptr;
     {
       std::lock_guard lock(mat.mu);
       load_locked(in, mat);
-      data = mat.data.get();
+      store = mat.store.get();
     }
-    FitJobResult r = run_fit_job(model, *data, in.file.string(), sha, opt_.job);
+    FitJobResult r = run_fit_job(model, *store, in.file.string(), sha, opt_.fit);
     r.record.metrics = report(mat, model, r.record.values);
-    const nlohmann::json doc = fit_job_json(r, opt_.job, in.material);
+    const nlohmann::json doc = fit_job_json(r, opt_.fit, in.material);
     std::error_code ec;
     fs::create_directories(json.parent_path(), ec);
     if (ec) throw InputError(json.parent_path().string(), "cannot create the folder: " + ec.message());
@@ -308,7 +308,8 @@ class Batch {
   const std::vector<BatchInput>& inputs_;
   const std::vector<const Model*>& models_;
   const fs::path out_;
-  const BatchOptions& opt_;
+  const BatchSettings& opt_;
+  const BatchLog& log_;
   std::string metric_;
   std::vector<std::string> report_;
   std::vector<Material> materials_;
@@ -321,18 +322,23 @@ class Batch {
 
 }  // namespace
 
+void BatchSettings::validate() const {
+  fit::validate(fit);
+  for (const std::string& id : report) parse_metric_list(id, "report");
+  if (jobs < 1 || jobs > kMaxJobs)
+    throw SettingError("jobs", fmt::format("must be in [1, {}] (got {})", kMaxJobs, jobs));
+}
+
 BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
-                           const fs::path& out_dir, const BatchOptions& opt) {
-  validate(opt.job);
-  for (const std::string& id : opt.report) parse_metric_list(id);
-  if (opt.jobs < 1) throw InputError("--jobs", "must be >= 1");
-  if (models.empty()) throw InputError("--models", "no model to fit");
+                           const fs::path& out_dir, const BatchSettings& settings, const BatchLog& log) {
+  settings.validate();
+  if (models.empty()) throw SettingError("models", "no model to fit");
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) throw InputError(out_dir.string(), "cannot create the output folder");
   for (const BatchInput& in : inputs) remove_stale_temporaries(out_dir / in.material);
   remove_stale_temporaries(out_dir);
-  Batch batch(inputs, models, out_dir, opt);
+  Batch batch(inputs, models, out_dir, settings, log);
   return batch.run();
 }
 

@@ -26,17 +26,25 @@ struct BatchInput {
 // nothing is left or two inputs share a material name.
 std::vector<BatchInput> list_batch_inputs(const std::vector<std::string>& args);
 
-struct BatchOptions {
-  FitJobOptions job;
+// The settings of a batch: the one type `fit-all`, and the Python batch read.
+struct BatchSettings {
+  FitSettings fit;                  // every fit's settings
   std::vector<std::string> report;  // metrics in every row and JSON; the fitting metric is added first
   int jobs = 1;                     // fits run at once (each fit is itself parallel)
   std::string compare;              // a published-fits file (DESIGN.md §10), or empty
-  std::function<void(std::string_view)> log;  // one line per finished fit, and the final count
+
+  static constexpr int kMaxJobs = 256;
+  // SettingError naming the first bad setting (the fit's, an unknown report metric, jobs).
+  void validate() const;
 };
 
-// Runs the batch into `out_dir` and writes summary.csv and table.txt there. InputError for bad
-// options or an unreadable --compare file (before any fit starts).
+// One line per finished fit, and the final count.
+using BatchLog = std::function<void(std::string_view)>;
+
+// Runs the batch into `out_dir` and writes summary.csv and table.txt there. SettingError for bad
+// settings, InputError for an unreadable compare file (before any fit starts).
 BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
-                           const std::filesystem::path& out_dir, const BatchOptions& opt);
+                           const std::filesystem::path& out_dir, const BatchSettings& settings,
+                           const BatchLog& log = {});
 
 }  // namespace brdfkit::fit

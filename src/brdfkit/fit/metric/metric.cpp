@@ -6,81 +6,87 @@
 #include <cmath>
 
 #include "brdfkit/core/error.h"
-#include "brdfkit/fit/metric/metric_cache.h"
+#include "brdfkit/core/ordered_reduce.h"
 #include "brdfkit/fit/metric/metric_definition.h"
-#include "brdfkit/measured/merl_brdf.h"
 
 namespace brdfkit::fit {
 
+const Registry<MetricDefinitionAt>& metric_registry() {
+  static const Registry<MetricDefinitionAt> registry = [] {
+    Registry<MetricDefinitionAt> r("metric");
+    r.add("ngan", &ngan_metric)
+        .add("bagher", &bagher_metric)
+        .add("low-e1", [](int coarsen) { return low_metric(1, coarsen); })
+        .add("low-e2", [](int coarsen) { return low_metric(2, coarsen); })
+        .add("hp-rmse", &hp_rmse_metric);
+    return r;
+  }();
+  return registry;
+}
+
+std::vector<std::string> metric_ids() { return metric_registry().names(); }
+
 namespace {
 
-constexpr std::string_view kIds[] = {"ngan", "bagher", "low-e1", "low-e2", "hp-rmse"};
-
-MetricDefinition definition(std::string_view id, int coarsen) {
-  if (id == "ngan") return ngan_metric(coarsen);
-  if (id == "bagher") return bagher_metric(coarsen);
-  if (id == "low-e1") return low_metric(1, coarsen);
-  if (id == "low-e2") return low_metric(2, coarsen);
-  if (id == "hp-rmse") return hp_rmse_metric(coarsen);
-  std::string known;
-  for (auto k : kIds) known += (known.empty() ? "" : ", ") + std::string(k);
-  throw InputError("metric '" + std::string(id) + "'", "unknown; known metrics: " + known);
+// The domain a definition gives on these data: the data's own samples (scattered formats), a MERL
+// table's cells, or the paper's grid with the measured value looked up (kept, or built on demand
+// for grids too large to keep). Returns Σ w over the domain, in chunk order.
+double build_domain(const MetricDefinition& def, const MeasuredBrdf& data, const MetricOptions& opt,
+                    std::vector<MetricChunk>& chunks, bool& on_samples, bool& on_cells) {
+  const merl::Table* cells = data.merl_cells();
+  const auto sample_density = def.sample_density ? def.sample_density : def.cells.density;
+  if (!cells && sample_density && is_scattered(data)) {
+    SampleDomain samples = build_sample_domain(data.samples(), sample_density, def.grid.cos_i_factor);
+    chunks = std::move(samples.chunks);
+    on_samples = true;
+    return samples.measure_sum;
+  }
+  if (cells && def.cells.density && opt.domain == MetricDomain::Auto) {
+    CellDomain domain = build_cell_domain(*cells, def.cells, opt.coarsen);
+    chunks = std::move(domain.chunks);
+    on_cells = true;
+    return domain.measure_sum;
+  }
+  double wsum = 0;
+  if (def.cache) {
+    chunks.resize(def.grid.theta_i.size());
+    tbb::parallel_for(size_t(0), chunks.size(), [&](size_t i) { chunks[i] = build_chunk(def.grid, i, data); });
+    for (const MetricChunk& ch : chunks)
+      for (double s : ch.sqrt_weight) wsum += s * s;
+  }
+  return wsum;
 }
 
 }  // namespace
 
-std::span<const std::string_view> metric_ids() { return kIds; }
-
-Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
+Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt,
+                    const std::function<double(int)>& max_albedo) {
   if (opt.coarsen < 1) throw InputError("metric '" + std::string(id) + "'", "coarsening factor must be >= 1");
-  if (auto kept = detail::find_cached_metric(data, id, opt)) return *kept;
-  const MetricDefinition def = definition(id, opt.coarsen);
+  const MetricDefinition def = metric_registry().get(id)(opt.coarsen);
   Metric m;
   m.id_ = std::string(id);
   m.grid_ = def.grid;
   m.transform_ = def.transform;
   m.sqrt_ = def.sqrt;
   m.data_ = &data;
-  double scale2 = def.channel_pool;
-  double wsum = 0;  // Σ w over the domain, in chunk order: deterministic
-  const auto* merl = dynamic_cast<const MerlBrdf*>(&data);
-  const auto sample_density = def.sample_density ? def.sample_density : def.cells.density;
-  if (!merl && sample_density && is_scattered(data)) {
-    SampleDomain samples = build_sample_domain(data.samples(), sample_density, def.grid.cos_i_factor);
-    m.chunks_ = std::move(samples.chunks);
-    m.on_samples_ = true;
-    wsum = samples.measure_sum;
-  } else if (merl && def.cells.density && opt.domain == MetricDomain::Auto) {
-    CellDomain cells = build_cell_domain(merl->table(), def.cells, opt.coarsen);
-    m.chunks_ = std::move(cells.chunks);
-    m.on_cells_ = true;
-    m.folded_ = def.cells.fold;
-    wsum = cells.measure_sum;
-  } else if (def.cache) {
-    m.chunks_.resize(m.grid_.theta_i.size());
-    tbb::parallel_for(size_t(0), m.chunks_.size(), [&](size_t i) { m.chunks_[i] = build_chunk(m.grid_, i, data); });
-    for (const MetricChunk& ch : m.chunks_)
-      for (double s : ch.sqrt_weight) wsum += s * s;
-  }
+  const double wsum = build_domain(def, data, opt, m.chunks_, m.on_samples_, m.on_cells_);
+  m.folded_ = m.on_cells_ && def.cells.fold;
   if ((def.cache || m.on_samples_) && m.sample_count() == 0)
     throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
+  double scale2 = def.channel_pool;
   if (def.divide_by_weight_sum) scale2 /= wsum;
   if (def.divide_by_max_albedo) {
-    m.albedo_norm_ = max_measured_albedo(data, opt.coarsen);
+    m.albedo_norm_ = max_albedo(opt.coarsen);
     if (!(m.albedo_norm_ > 0) || !std::isfinite(m.albedo_norm_))
       throw MetricUndefined(data.path(), "maximum measured albedo is not positive; metric '" + m.id_ +
-                                        "' is normalized by it and undefined");
+                                             "' is normalized by it and undefined");
   }
   m.scale_ = std::sqrt(scale2) / (def.sqrt ? m.albedo_norm_ : 1.0);
-  detail::keep_metric(data, id, opt, m);
   return m;
 }
 
-std::shared_ptr<const Metric> shared_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
-  if (auto kept = detail::find_cached_metric(data, id, opt)) return kept;
-  Metric m = make_metric(id, data, opt);
-  if (auto kept = detail::find_cached_metric(data, id, opt)) return kept;  // kept by make_metric
-  return std::make_shared<const Metric>(std::move(m));
+Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt) {
+  return build_metric(id, data, opt, [&](int coarsen) { return max_measured_albedo(data, coarsen); });
 }
 
 const MetricChunk& Metric::chunk(size_t i, MetricChunk& scratch) const {
@@ -106,13 +112,11 @@ double Metric::finish(double sum_sq) const { return sqrt_ ? std::sqrt(sum_sq) : 
 
 double Metric::value(const Model& model, const ParamValues& values) const {
   check_model(model);
-  std::vector<double> partial(chunk_count(), 0.0);
-  std::vector<unsigned char> bad(chunk_count(), 0);
-  std::vector<size_t> count(chunk_count(), 0);
-  tbb::parallel_for(size_t(0), chunk_count(), [&](size_t i) {
+  // Per chunk: Σ r² (the residual of residual.h, scale applied at the end), its sample count, and
+  // whether the sum is finite.
+  const std::vector<double> total = ordered_reduce(chunk_count(), 3, [&](size_t i, double* acc) {
     MetricChunk scratch;
     const MetricChunk& ch = chunk(i, scratch);
-    count[i] = ch.size();
     double sum = 0;
     std::vector<double> rho(ch.size());
     const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
@@ -122,24 +126,19 @@ double Metric::value(const Model& model, const ParamValues& values) const {
       for (size_t k = 0; k < ch.size(); ++k) {
         const double f = ch.factor[k];
         const double r =
-            ch.sqrt_weight[k] * (apply_transform(transform_, f * rho[k]) - apply_transform(transform_, f * meas[k]));
+            metric_residual(transform_, ch.sqrt_weight[k], f, rho[k], transformed_measured(transform_, f, meas[k]));
         sum += r * r;
       }
     }
-    partial[i] = sum;
-    bad[i] = !std::isfinite(sum);
+    acc[0] = sum;
+    acc[1] = double(ch.size());
+    acc[2] = std::isfinite(sum) ? 0.0 : 1.0;
   });
-  double total = 0;
-  for (size_t i = 0; i < partial.size(); ++i) {
-    if (bad[i])
-      throw InputError("parameters of model '" + std::string(model.name()) + "'",
-                       "the model evaluates to a non-finite value in the domain of metric '" + id_ + "'");
-    total += partial[i];
-  }
-  size_t samples = 0;
-  for (size_t n : count) samples += n;
-  if (samples == 0) throw MetricUndefined(data_->path(), "no measured value in the domain of metric '" + id_ + "'");
-  return finish(scale_ * scale_ * total);
+  if (total[2] > 0)
+    throw InputError("parameters of model '" + std::string(model.name()) + "'",
+                     "the model evaluates to a non-finite value in the domain of metric '" + id_ + "'");
+  if (total[1] == 0) throw MetricUndefined(data_->path(), "no measured value in the domain of metric '" + id_ + "'");
+  return finish(scale_ * scale_ * total[0]);
 }
 
 double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
@@ -151,7 +150,6 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
       if (theta <= 80 * deg + 1e-9) best = std::max(best, a.maxCoeff());
     return best;
   }
-  if (auto kept = detail::find_cached_albedo(data, coarsen)) return *kept;
   const int n_i = 80 / coarsen;
   const auto ti = cell_centres(0.0, n_i * coarsen * deg, n_i);
   const auto to = cell_centres(0.0, kPi / 2, 90 / coarsen);
@@ -170,7 +168,7 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
   tbb::parallel_for(size_t(0), ti.size(), [&](size_t i) {
     const Vec3d wi(std::sin(ti[i].angle), 0.0, std::cos(ti[i].angle));
     std::vector<std::optional<Rgb>> m;
-    lookup_row(data, wi, wo, m);
+    data.eval_row(wi, wo, m);
     Rgb a = Rgb::Zero();
     for (size_t k = 0; k < wo.size(); ++k)
       if (m[k] && m[k]->allFinite()) a += *m[k] * w[k];  // ρ cosθo dωo
@@ -178,7 +176,6 @@ double max_measured_albedo(const MeasuredBrdf& data, int coarsen) {
   });
   double out = 0;
   for (double b : best) out = std::max(out, b);
-  detail::keep_albedo(data, coarsen, out);
   return out;
 }
 

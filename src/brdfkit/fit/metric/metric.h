@@ -5,21 +5,20 @@
 // with w the quadrature weight, f the cosθi factor or 1, T the identity or ln(1 + ·) (seed 003
 // Eq. 31–32), s a global scale (normalizations) and post = √ or the identity (seed 003 Eq. 33
 // is a sum of squares).
-#include <cmath>
+#include <functional>
 #include <memory>
-#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/registry.h"
 #include "brdfkit/fit/metric/metric_grid.h"
+#include "brdfkit/fit/metric/residual.h"
 #include "brdfkit/measured/measured_brdf.h"
 #include "brdfkit/models/model.h"
 
 namespace brdfkit::fit {
-
-enum class Transform { Identity, Log1p };
 
 // The data answer nothing in a metric's domain (scattered samples, empty tables) or have no
 // albedo to normalize by: a property of the data, so reports show "n/a" for that metric.
@@ -71,7 +70,8 @@ class Metric {
   double finish(double sum_sq) const;
 
  private:
-  friend Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt);
+  friend Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt,
+                             const std::function<double(int)>& max_albedo);
   std::string id_;
   GridSpec grid_;
   Transform transform_ = Transform::Identity;
@@ -85,22 +85,19 @@ class Metric {
   const MeasuredBrdf* data_ = nullptr;  // for chunks built on demand; must outlive the metric
 };
 
-// Known metric ids in a stable order: ngan, bagher, low-e1, low-e2, hp-rmse.
-std::span<const std::string_view> metric_ids();
-// Builds a metric over `data` (which must outlive it); throws InputError for unknown ids or data
-// without the reflectance the metric needs.
-Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt = {});
+struct MetricDefinition;
+// A metric's definition at a grid coarsening (metric_definition.h: one file per paper's metric).
+using MetricDefinitionAt = MetricDefinition (*)(int coarsen);
+// The metrics of DESIGN.md §7 in a stable order: ngan, bagher, low-e1, low-e2, hp-rmse.
+const Registry<MetricDefinitionAt>& metric_registry();
+std::vector<std::string> metric_ids();
 
-// Applies T to a value: identity, or ln(1 + x) guarded for x ≤ −1 (noise below −1 is clamped
-// to −1 + 1e-12 so the logarithm stays finite).
-inline double apply_transform(Transform t, double x) {
-  if (t == Transform::Identity) return x;
-  return std::log1p(x > -1.0 + 1e-12 ? x : -1.0 + 1e-12);
-}
-// T′(x): 1, or 1/(1 + x) — 0 where apply_transform clamps.
-inline double transform_slope(Transform t, double x) {
-  if (t == Transform::Identity) return 1.0;
-  return x > -1.0 + 1e-12 ? 1.0 / (1.0 + x) : 0.0;
-}
+// Builds a metric over `data` (which must outlive it); throws InputError for unknown ids or data
+// without the reflectance the metric needs. The normalizing albedo is integrated here; a
+// MetricStore (metric_store.h) builds each metric once and integrates the albedo once per data.
+Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt = {});
+// make_metric with the maximum measured albedo at a coarsening taken from `max_albedo`.
+Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricOptions& opt,
+                    const std::function<double(int)>& max_albedo);
 
 }  // namespace brdfkit::fit

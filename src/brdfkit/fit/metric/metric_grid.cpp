@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "brdfkit/measured/rgl_tensor.h"
 
 namespace brdfkit::fit {
 
@@ -19,15 +18,6 @@ std::vector<AxisNode> regular_nodes(double lo, double hi, double step) {
   const int n = int(std::floor((hi - lo) / step + 1e-9));
   for (int k = 0; k <= n; ++k) nodes.push_back({lo + k * step, step});
   return nodes;
-}
-
-void lookup_row(const MeasuredBrdf& data, const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) {
-  if (const auto* rgl = dynamic_cast<const RglBrdf*>(&data)) {
-    rgl->eval_from(wi, wo, out);
-    return;
-  }
-  out.resize(wo.size());
-  for (size_t k = 0; k < wo.size(); ++k) out[k] = data.eval(wi, wo[k]);
 }
 
 MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data) {
@@ -79,7 +69,7 @@ MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data
       weight.push_back(w);
     }
   }
-  lookup_row(data, wi, wo, m);
+  data.eval_row(wi, wo, m);
   for (auto* v : {&ch.wi_x, &ch.wi_y, &ch.wi_z, &ch.wo_x, &ch.wo_y, &ch.wo_z, &ch.sqrt_weight, &ch.factor})
     v->reserve(wo.size());
   for (auto& c : ch.measured) c.reserve(wo.size());

@@ -50,10 +50,6 @@ std::vector<AxisNode> cell_centres(double lo, double hi, int n, double scale = 1
 // Nodes lo, lo + step, …, up to hi inclusive (within 1e-9 of a step), each weighted by step.
 std::vector<AxisNode> regular_nodes(double lo, double hi, double step);
 
-// out[k] = data.eval(wi, wo[k]): through RglBrdf::eval_from for RGL files (the per-wi part of
-// the look-up once per row, same values), pair by pair otherwise.
-void lookup_row(const MeasuredBrdf& data, const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out);
-
 // Builds the chunk of θi node i: looks the measured value up at every (θo, φ) node, keeps the
 // valid ones with non-zero weight.
 MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data);

@@ -3,18 +3,26 @@
 #include <string>
 #include <vector>
 
-#include "brdfkit/fit/fit_record.h"
 #include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/fit/metric/metric_store.h"
 
 namespace brdfkit::fit {
 
-// Values of `ids` (all metrics when empty) in the order given. A metric the data cannot answer
-// (no measured value in its domain, no albedo to normalize by) is reported without a value and
-// with the reason, never as NaN; a non-finite model value is an InputError (bad parameters).
-std::vector<MetricReport> report_metrics(const MeasuredBrdf& data, const Model& model, const ParamValues& values,
+// One metric's value, or why the data cannot answer it.
+struct MetricReport {
+  std::string id;
+  std::optional<double> value;  // nullopt: the metric does not apply to these data (see note)
+  std::string note;
+};
+
+// Values of `ids` (all metrics when empty) in the order given, on the store's data. A metric the
+// data cannot answer (no measured value in its domain, no albedo to normalize by) is reported
+// without a value and with the reason, never as NaN; a non-finite model value is an InputError
+// (bad parameters).
+std::vector<MetricReport> report_metrics(MetricStore& store, const Model& model, const ParamValues& values,
                                          const std::vector<std::string>& ids, const MetricOptions& opt);
 
-// Splits "a,b,c" and checks each id; InputError for unknown ones.
-std::vector<std::string> parse_metric_list(const std::string& list);
+// Splits "a,b,c" and checks each id; SettingError `setting` for an unknown one.
+std::vector<std::string> parse_metric_list(const std::string& list, const std::string& setting = "report");
 
 }  // namespace brdfkit::fit

@@ -6,20 +6,20 @@
 // is the same integrand (cosθi ρ compared, weights sinθo Δθo Δφo Δθi, φo over the full circle,
 // seed 003 Eq. 29–33) sampled with θi every 10° and θo, φo every 1° up to 80° (1.396 rad < 1.4):
 // minimizing it minimizes a quadrature of Eq. 29. The result is reported under hp-rmse on its
-// own grid (or under ProcedureOptions::metric, which then is also the fitting domain).
+// own grid (or under FitSettings::metric, which then is also the fitting domain).
 //
 // hp-2step (DESIGN.md §8): the (θh, θd) cells are classified by |det(∇ log ρ, ∇f)| < threshold
-// on the φd-averaged table (analysis/diffraction_map.h, seed 004 Eq. 15, Fig. 5–6); step 1 fits
+// on the φd-averaged table (measured/diffraction_map.h, seed 004 Eq. 15, Fig. 5–6); step 1 fits
 // the diffuse and diffraction lobes (kd, kw, a) with the reflection lobe off (ks = 0) on the
 // samples of the fitting domain that fall in a cell classified as diffraction-dominated in every
 // channel (Fig. 6 shows the three channels overlaid there); step 2 fits the reflection lobe and
 // the Fresnel term (ks, σ, p, F0) on the whole domain with kd, kw, a held (§5.8).
-// Checked on an analytic material with a diffraction lobe (tests/fit_physical/test_hp_two_step.cpp):
+// Checked on an analytic material with a diffraction lobe (tests/fit/procedure/test_hp_two_step.cpp):
 // the classified cells are the diffraction lobe's and the flat diffuse region's (det ≈ 0 where
 // log ρ is flat too), the reflection lobe dominates < 0.1 % of them, so step 1 is off only by that
 // lobe's tail (a few percent); step 2 then recovers σ to 1e-4 where the grid resolves the lobe.
-// Step 2 ending at σ's lower bound (session 2) was a local minimum reached from the table's
-// default start on an 8°-coarsened grid (low-e1 3.1e-3 there vs 5.7e-6 from fit_model's start scan).
+// From the table's defaults instead of the start scan, step 2 can end at σ's lower bound, a local
+// minimum (on an 8°-coarsened grid: low-e1 3.1e-3 there against 5.7e-6 from the scanned start).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -83,11 +83,29 @@ std::vector<bool> diffraction_params(const Model& model) {
   return first;
 }
 
-ProcedureResult two_step(const Model& model, const MeasuredBrdf& data, const ProcedureOptions& opt,
-                         const std::string& domain) {
+// The fitting metric and the grid the fit runs on (see above).
+std::string reported_metric(const FitSettings& s) { return s.metric.empty() ? "hp-rmse" : s.metric; }
+std::string fitting_domain(const FitSettings& s) { return s.metric.empty() ? "low-e1" : s.metric; }
+
+// Reports the fit under hp-rmse when it ran on another grid.
+void report_under_metric(ProcedureResult& r, const Model& model, MetricStore& store, const FitSettings& settings) {
+  r.metric = reported_metric(settings);
+  if (r.metric != fitting_domain(settings)) {
+    r.fit.metric_value = metric_value(r.metric, model, r.fit.values, store, settings.coarsen);
+    r.steps.push_back(fmt::format("{} = {:.6g}", r.metric, r.fit.metric_value));
+  }
+}
+
+}  // namespace
+
+ProcedureResult hp_two_step(const Model& model, MetricStore& store, const FitSettings& settings,
+                            const Progress& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const MeasuredBrdf& data = store.data();
+  const std::string domain = fitting_domain(settings);
   const std::vector<bool> first = diffraction_params(model);
   DiffractionOptions dopt;
-  dopt.threshold = opt.diffraction_threshold;
+  dopt.threshold = settings.threshold;
   const DiffractionMap map = diffraction_map(data, dopt);
   ProcedureResult r;
   int common = 0;
@@ -100,7 +118,7 @@ ProcedureResult two_step(const Model& model, const MeasuredBrdf& data, const Pro
                                 "R {}/{}, G {}/{}, B {}/{}, all three channels {}",
                                 map.threshold, map.diffraction_cells[0], map.classified[0], map.diffraction_cells[1],
                                 map.classified[1], map.diffraction_cells[2], map.classified[2], common));
-  if (opt.progress) opt.progress(r.steps.back());
+  if (progress) progress(r.steps.back());
   if (common == 0)
     throw MetricUndefined(data.path(), fmt::format("hp-2step: no (θh, θd) cell is diffraction-dominated in every "
                                                    "channel at threshold {:g}; use hp-1step or another threshold",
@@ -113,48 +131,39 @@ ProcedureResult two_step(const Model& model, const MeasuredBrdf& data, const Pro
   for (auto& ch : start.values) ch[size_t(ks)] = 0.0;
   const FixedParams step1_model(model, hold1, start);
   const DiffractionCells cells(data, map);
-  const FitResult s1 = plain_fit(step1_model, cells, domain, opt, opt.starts);
+  MetricStore cell_store(cells);
+  const FitResult s1 = plain_fit(step1_model, cell_store, domain, settings, settings.starts);
   const ParamValues after1 = step1_model.merged(s1.values);
   r.steps.push_back(fmt::format("step 1: kd, kw, a on the diffraction-dominated cells of the {} grid, ks = 0: "
                                 "{} = {:.6g}",
                                 domain, domain, s1.metric_value));
-  if (opt.progress) opt.progress(r.steps.back());
+  if (progress) progress(r.steps.back());
   // Step 2: reflection lobe and Fresnel on the whole domain, kd, kw, a held.
   const FixedParams step2_model(model, first, after1);
-  const FitResult s2 = plain_fit(step2_model, data, domain, opt, opt.starts);
+  const FitResult s2 = plain_fit(step2_model, store, domain, settings, settings.starts);
   r.fit = s2;
   r.fit.values = step2_model.merged(s2.values);
   r.fit.iterations = s1.iterations + s2.iterations;
   r.fit.converged = s1.converged && s2.converged;
   r.steps.push_back(fmt::format("step 2: reflection lobe and Fresnel on the whole {} grid, kd, kw, a held: {} = {:.6g}",
                                 domain, domain, s2.metric_value));
+  report_under_metric(r, model, store, settings);
+  r.fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
 
-}  // namespace
-
-ProcedureResult hp_procedure(std::string_view id, const Model& model, const MeasuredBrdf& data,
-                             const ProcedureOptions& opt) {
+ProcedureResult hp_one_step(const Model& model, MetricStore& store, const FitSettings& settings,
+                            const Progress& progress) {
   const auto t0 = std::chrono::steady_clock::now();
+  const std::string domain = fitting_domain(settings);
+  const int starts = std::max(settings.starts, kPaperRestarts);
+  if (progress)
+    progress(fmt::format("hp-1step: fitting {} on the {} grid, {} random restarts", model.name(), domain, starts));
   ProcedureResult r;
-  r.metric = opt.metric.empty() ? "hp-rmse" : opt.metric;
-  const std::string domain = opt.metric.empty() ? "low-e1" : opt.metric;
-  if (id == "hp-2step") {
-    const std::string metric = r.metric;
-    r = two_step(model, data, opt, domain);
-    r.metric = metric;
-  } else {
-    const int starts = std::max(opt.starts, kPaperRestarts);
-    if (opt.progress)
-      opt.progress(fmt::format("hp-1step: fitting {} on the {} grid, {} random restarts", model.name(), domain, starts));
-    r.fit = plain_fit(model, data, domain, opt, starts);
-    r.steps.push_back(fmt::format("fit all parameters at once on the {} grid (seed 004 Eq. 29), {} starts: {} = {:.6g}",
-                                  domain, starts, domain, r.fit.metric_value));
-  }
-  if (r.metric != domain) {
-    r.fit.metric_value = metric_value(r.metric, model, r.fit.values, data, opt.coarsen);
-    r.steps.push_back(fmt::format("{} = {:.6g}", r.metric, r.fit.metric_value));
-  }
+  r.fit = plain_fit(model, store, domain, settings, starts);
+  r.steps.push_back(fmt::format("fit all parameters at once on the {} grid (seed 004 Eq. 29), {} starts: {} = {:.6g}",
+                                domain, starts, domain, r.fit.metric_value));
+  report_under_metric(r, model, store, settings);
   r.fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -10,61 +10,81 @@ namespace brdfkit::fit {
 
 namespace {
 
-constexpr std::string_view kIds[] = {"ngan", "bagher", "low-e1", "low-e2", "hp-2step", "hp-1step"};
-
-void check_id(std::string_view id) {
-  for (auto k : kIds)
-    if (k == id) return;
-  std::string known;
-  for (auto k : kIds) known += (known.empty() ? "" : ", ") + std::string(k);
-  throw InputError("procedure '" + std::string(id) + "'", "unknown; known procedures: " + known);
+// Seed 002 §3 and seed 003 §5.1: one fit under the procedure's metric.
+template <const char* kMetric>
+ProcedureResult single_fit(const Model& model, MetricStore& store, const FitSettings& settings,
+                           const Progress& progress) {
+  ProcedureResult r;
+  r.metric = settings.metric.empty() ? std::string(kMetric) : settings.metric;
+  if (progress) progress(fmt::format("{}: fitting {} under {}", kMetric, model.name(), r.metric));
+  r.fit = plain_fit(model, store, r.metric, settings, settings.starts);
+  r.steps.push_back(fmt::format("fit all parameters under {} ({} shape, {} start(s)): {} = {:.6g}", r.metric,
+                                settings.per_channel_shape ? "per-channel" : "shared", settings.starts, r.metric,
+                                r.fit.metric_value));
+  return r;
 }
+
+constexpr char kNgan[] = "ngan", kLowE1[] = "low-e1", kLowE2[] = "low-e2";
 
 }  // namespace
 
-std::span<const std::string_view> procedure_ids() { return kIds; }
-
-std::string_view procedure_metric(std::string_view id) {
-  check_id(id);
-  if (id.starts_with("hp-")) return "hp-rmse";
-  return id;  // ngan, bagher, low-e1, low-e2: the procedure is named after its metric (DESIGN.md §8)
+const Registry<Procedure>& procedure_registry() {
+  static const Registry<Procedure> registry = [] {
+    Registry<Procedure> r("procedure");
+    r.add("ngan", {"ngan", "lobe shape by bounded least squares, colours by projection (seed 002 §3)", &single_fit<kNgan>})
+        .add("bagher", {"bagher", "per channel, the θd = 0 then the θh = 0 slice (seed 000 §5)", &bagher_procedure})
+        .add("low-e1", {"low-e1", "every parameter under E1 (seed 003 §5.1)", &single_fit<kLowE1>})
+        .add("low-e2", {"low-e2", "every parameter under E2 (seed 003 §5.1)", &single_fit<kLowE2>})
+        .add("hp-2step", {"hp-rmse", "diffuse + diffraction first, then reflection (seed 004 §5.8)", &hp_two_step})
+        .add("hp-1step", {"hp-rmse", "all parameters at once, random restarts (seed 004 §5.8)", &hp_one_step});
+    return r;
+  }();
+  return registry;
 }
 
-double metric_value(std::string_view id, const Model& model, const ParamValues& values, const MeasuredBrdf& data,
-                    int coarsen) {
-  const Metric m = make_metric(id, data, MetricOptions{coarsen});
-  return m.value(model, values);
+std::string fitting_metric(const FitSettings& settings) {
+  if (settings.procedure.empty()) return settings.fitting_metric("");
+  const Procedure* p = procedure_registry().find(settings.procedure);
+  if (!p) throw procedure_registry().unknown_setting("procedure", settings.procedure);
+  return settings.fitting_metric(std::string(p->metric));
 }
 
-FitResult plain_fit(const Model& model, const MeasuredBrdf& data, std::string_view metric_id,
-                    const ProcedureOptions& opt, int starts) {
-  const Metric metric = make_metric(metric_id, data, MetricOptions{opt.coarsen});
-  const FitOptions fo{starts, opt.seed, opt.max_iterations};
-  if (!opt.per_channel_shape) return fit_model(model, metric, fo);
+void validate(const FitSettings& settings) {
+  settings.validate();
+  fitting_metric(settings);
+}
+
+FitResult plain_fit(const Model& model, MetricStore& store, std::string_view metric_id, const FitSettings& settings,
+                    int starts) {
+  const std::shared_ptr<const Metric> metric = store.metric(metric_id, MetricOptions{settings.coarsen});
+  FitSettings s = settings;
+  s.starts = starts;
+  if (!settings.per_channel_shape) return fit_model(model, *metric, s);
   const PerChannelShape wrapped(model);
-  return fit_model(wrapped, metric, fo);
+  return fit_model(wrapped, *metric, s);
 }
 
-ProcedureResult run_procedure(std::string_view id, const Model& model, const MeasuredBrdf& data,
-                              const ProcedureOptions& opt) {
-  check_id(id);
-  if (opt.coarsen < 1) throw InputError("procedure '" + std::string(id) + "'", "coarsening factor must be >= 1");
-  if (!opt.metric.empty()) {
-    bool known = false;
-    for (auto m : metric_ids()) known = known || m == opt.metric;
-    if (!known) make_metric(opt.metric, data);  // throws the metric's own "unknown" message
+double metric_value(std::string_view id, const Model& model, const ParamValues& values, MetricStore& store,
+                    int coarsen) {
+  return store.metric(id, MetricOptions{coarsen})->value(model, values);
+}
+
+ProcedureResult run_procedure(const Model& model, MetricStore& store, const FitSettings& settings,
+                              const Progress& progress) {
+  validate(settings);
+  if (settings.procedure.empty()) {
+    // A plain fit under a metric is the `ngan` preset with its metric replaced.
+    FitSettings s = settings;
+    s.metric = fitting_metric(settings);
+    return single_fit<kNgan>(model, store, s, progress);
   }
-  if (id == "bagher") return bagher_procedure(model, data, opt);
-  if (id.starts_with("hp-")) return hp_procedure(id, model, data, opt);
-  // ngan, low-e1, low-e2: one fit under the metric (seed 002 §3, seed 003 §5.1).
-  ProcedureResult r;
-  r.metric = opt.metric.empty() ? std::string(id) : opt.metric;
-  if (opt.progress) opt.progress(fmt::format("{}: fitting {} under {}", id, model.name(), r.metric));
-  r.fit = plain_fit(model, data, r.metric, opt, opt.starts);
-  r.steps.push_back(fmt::format("fit all parameters under {} ({} shape, {} start(s)): {} = {:.6g}", r.metric,
-                                opt.per_channel_shape ? "per-channel" : "shared", opt.starts, r.metric,
-                                r.fit.metric_value));
-  return r;
+  return procedure_registry().get(settings.procedure).run(model, store, settings, progress);
+}
+
+ProcedureResult run_procedure(const Model& model, const MeasuredBrdf& data, const FitSettings& settings,
+                              const Progress& progress) {
+  MetricStore store(data);
+  return run_procedure(model, store, settings, progress);
 }
 
 }  // namespace brdfkit::fit
