@@ -17,42 +17,8 @@
 namespace brdfkit {
 namespace {
 
+using test::expect_jets;
 using J = ceres::Jet<double, 3>;
-
-template <template <class> class N> void expect_jets(std::vector<double> p, std::vector<double> cosines = {0.3, 0.8, 0.97, 0.999}) {
-  std::vector<J> pj;
-  for (std::size_t i = 0; i < p.size(); ++i) pj.emplace_back(p[i], int(i));
-  const N<J> dj(pj.data());
-  const N<double> d(p.data());
-  const std::string name = test::describe_params(p);
-  for (double c : cosines) {
-    const double x = (1 - c * c) / (c * c);
-    const J Dj = dj.D(J(c)), Pj = dj.P22(J(x)), Uj = dj.unit(J(c));
-    EXPECT_NEAR(Dj.a, d.D(c), 1e-13 * std::abs(d.D(c))) << name << " c " << c;
-    EXPECT_NEAR(Pj.a, d.P22(x), 1e-13 * std::abs(d.P22(x))) << name << " c " << c;
-    EXPECT_NEAR(Uj.a, d.unit(c), 1e-13 * std::abs(d.unit(c))) << name << " c " << c;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const double h = 1e-5 * std::abs(p[i]);
-      auto at = [&](double delta) {
-        std::vector<double> q = p;
-        q[i] += delta;
-        const N<double> e(q.data());
-        return std::array<double, 3>{e.D(c), e.P22(x), e.unit(c)};
-      };
-      // Fourth-order central difference: steep exponentials (e^{−x/α²}) defeat the 2nd-order one.
-      const auto h1 = at(h), l1 = at(-h), h2 = at(2 * h), l2 = at(-2 * h);
-      double fd[3];
-      for (int k = 0; k < 3; ++k) fd[k] = (8 * (h1[k] - l1[k]) - (h2[k] - l2[k])) / (12 * h);
-      const double ad[3] = {Dj.v[i], Pj.v[i], Uj.v[i]};
-      const double scale[3] = {d.D(c), d.P22(x), d.unit(c)};
-      for (int k = 0; k < 3; ++k) {
-        // Relative to the derivative, or to value/parameter where the derivative nearly vanishes.
-        const double tol = 1e-6 * std::max(std::abs(fd[k]), 1e-3 * std::abs(scale[k] / p[i]));
-        EXPECT_NEAR(ad[k], fd[k], tol) << name << " c " << c << " param " << i << " (D, P22, unit)[" << k << "]";
-      }
-    }
-  }
-}
 
 TEST(NdfJets, Beckmann) { expect_jets<Beckmann>({0.2}); }
 TEST(NdfJets, Ggx) { expect_jets<Ggx>({0.2}); }

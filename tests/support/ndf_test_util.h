@@ -1,10 +1,12 @@
 #pragma once
 // Helpers of the ndf tests: a quadrature of ∫ D cosθ dω independent of the distributions'
 // own normalization code, and a χ² goodness-of-fit test of a θ sampler against a density.
+#include <ceres/jet.h>
 #include <gtest/gtest.h>
 
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -115,6 +117,47 @@ inline Chi2Outcome chi2_theta_phi(const std::function<Vec3d(const Vec2d&)>& samp
   boost::math::chi_squared_distribution<double> dist(r.dof);
   r.p_value = r.statistic > 1e200 ? 0.0 : boost::math::cdf(boost::math::complement(dist, r.statistic));
   return r;
+}
+
+// D, P22 and unit in ceres::Jet equal the double evaluation, and their parameter derivatives match
+// fourth-order central differences to 1e-6 relative (DESIGN.md §1: one template for doubles and Jets).
+template <template <class> class N> void expect_jets(std::vector<double> p, std::vector<double> cosines = {0.3, 0.8, 0.97, 0.999}) {
+  using J = ceres::Jet<double, 3>;
+  std::vector<J> pj;
+  for (std::size_t i = 0; i < p.size(); ++i) pj.emplace_back(p[i], int(i));
+  const N<J> dj(pj.data());
+  const N<double> d(p.data());
+  const std::string name = test::describe_params(p);
+  for (double c : cosines) {
+    const double x = (1 - c * c) / (c * c);
+    if (!(d.D(c) > 1e-200)) continue;  // the far tail, down to subnormal numbers: nothing to compare
+    const J Dj = dj.D(J(c)), Pj = dj.P22(J(x)), Uj = dj.unit(J(c));
+    EXPECT_NEAR(Dj.a, d.D(c), 1e-13 * std::abs(d.D(c))) << name << " c " << c;
+    EXPECT_NEAR(Pj.a, d.P22(x), 1e-13 * std::abs(d.P22(x))) << name << " c " << c;
+    EXPECT_NEAR(Uj.a, d.unit(c), 1e-13 * std::abs(d.unit(c))) << name << " c " << c;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double h = 1e-5 * std::abs(p[i]);
+      auto at = [&](double delta) {
+        std::vector<double> q = p;
+        q[i] += delta;
+        const N<double> e(q.data());
+        return std::array<double, 3>{e.D(c), e.P22(x), e.unit(c)};
+      };
+      // Fourth-order central difference: steep exponentials (e^{−x/α²}) defeat the 2nd-order one.
+      const auto h1 = at(h), l1 = at(-h), h2 = at(2 * h), l2 = at(-2 * h), mid = at(0);
+      // A kink in the parameter (a compact support's edge reaching c) has no derivative to compare.
+      if (std::abs((h1[0] - mid[0]) - (mid[0] - l1[0])) > 1e-3 * std::abs(h1[0] - l1[0])) continue;
+      double fd[3];
+      for (int k = 0; k < 3; ++k) fd[k] = (8 * (h1[k] - l1[k]) - (h2[k] - l2[k])) / (12 * h);
+      const double ad[3] = {Dj.v[i], Pj.v[i], Uj.v[i]};
+      const double scale[3] = {d.D(c), d.P22(x), d.unit(c)};
+      for (int k = 0; k < 3; ++k) {
+        // Relative to the derivative, or to value/parameter where the derivative nearly vanishes.
+        const double tol = 1e-6 * std::max(std::abs(fd[k]), 1e-3 * std::abs(scale[k] / p[i]));
+        EXPECT_NEAR(ad[k], fd[k], tol) << name << " c " << c << " param " << i << " (D, P22, unit)[" << k << "]";
+      }
+    }
+  }
 }
 
 }  // namespace brdfkit::test

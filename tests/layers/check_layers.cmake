@@ -1,0 +1,67 @@
+# Fails when a file of src/brdfkit/ includes a header of a higher layer, or of another folder of its
+# own rank. Data flows one way (README, DESIGN.md §1):
+#   core → measured → ndf, fresnel → shadowing → models → fit → analysis → render → report, export → python
+# and inside fit: metric → settings → engine → procedure → (fit/*.h) → batch.
+# Usage: cmake -DROOT=<dir holding brdfkit/> -P check_layers.cmake
+if(NOT ROOT)
+  message(FATAL_ERROR "check_layers: pass -DROOT=<folder that holds brdfkit/>")
+endif()
+
+set(ranks core=0 measured=10 ndf=20 fresnel=20 shadowing=30 models=40
+          fit/metric=50 fit/settings=51 fit/engine=52 fit/procedure=53 fit=54 fit/batch=55
+          analysis=60 render=70 report=80 export=80 python=90)
+
+# The layer of a path below brdfkit/ ("fit/engine/fit_model.h" → fit/engine).
+function(layer_of path out)
+  string(REGEX MATCH "^[a-z_]+" top "${path}")
+  set(layer "${top}")
+  if(top STREQUAL "fit")
+    string(REGEX MATCH "^fit/([a-z_]+)/" sub "${path}")
+    if(sub)
+      set(layer "fit/${CMAKE_MATCH_1}")
+    endif()
+  endif()
+  set(${out} "${layer}" PARENT_SCOPE)
+endfunction()
+
+function(rank_of layer out)
+  foreach(entry ${ranks})
+    string(REPLACE "=" ";" kv "${entry}")
+    list(GET kv 0 name)
+    list(GET kv 1 value)
+    if(name STREQUAL layer)
+      set(${out} ${value} PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+  set(${out} "" PARENT_SCOPE)
+endfunction()
+
+file(GLOB_RECURSE files RELATIVE "${ROOT}/brdfkit" "${ROOT}/brdfkit/*.h" "${ROOT}/brdfkit/*.cpp")
+set(violations 0)
+set(checked 0)
+foreach(file ${files})
+  layer_of("${file}" from)
+  rank_of("${from}" from_rank)
+  if(from_rank STREQUAL "")
+    message(SEND_ERROR "${file}: folder '${from}' is not a known layer")
+    math(EXPR violations "${violations} + 1")
+    continue()
+  endif()
+  file(STRINGS "${ROOT}/brdfkit/${file}" includes REGEX "^#include \"brdfkit/")
+  foreach(line ${includes})
+    string(REGEX REPLACE "^#include \"brdfkit/([^\"]+)\".*" "\\1" target "${line}")
+    layer_of("${target}" to)
+    rank_of("${to}" to_rank)
+    math(EXPR checked "${checked} + 1")
+    if(to_rank STREQUAL "" OR to_rank GREATER from_rank OR (to_rank EQUAL from_rank AND NOT to STREQUAL from))
+      message(SEND_ERROR "${file} (layer ${from}) includes brdfkit/${target} (layer ${to}): layers point one way")
+      math(EXPR violations "${violations} + 1")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH files nfiles)
+if(violations GREATER 0)
+  message(FATAL_ERROR "check_layers: ${violations} include(s) against the layer order in ${nfiles} files")
+endif()
+message(STATUS "check_layers: ${checked} includes in ${nfiles} files follow the layer order")
