@@ -20,6 +20,7 @@
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/beckmann.h"
 #include "brdfkit/shadowing/smith.h"
+#include "brdfkit/shadowing/smith_g1_row.h"
 
 namespace brdfkit {
 
@@ -34,18 +35,11 @@ enum class Masking {
 inline double ks_from_bagher_rho_s(double rho_s) { return 4.0 * rho_s * kInvPi; }
 inline double bagher_rho_s_from_ks(double ks) { return ks * kPi / 4.0; }
 
-// tanθ below which a distribution's Smith G1 = 1/(1 + Λ) is 1 to the last bit, so the batch loops
-// skip Λ there (its erfc and exp are most of a Beckmann evaluation); 0: never.
-template <template <class> class Ndf> struct SmithUnitBelow {
-  static constexpr bool kKnown = false;  // the batch loops stay as they are (GGX's vectorizes)
-  static double tan_theta(const Ndf<double>&) { return 0.0; }
-};
-// Beckmann: 0 < Λ(a) < exp(−a²)/(2a√π) (DESIGN.md §4, a = 1/(α tanθ)), which for a ≥ 6.5 is below
-// 2⁻⁶⁰, so 1 + Λ rounds to 1 and G1 = 1 exactly: tanθ ≤ 1/(6.5 α).
-template <> struct SmithUnitBelow<Beckmann> {
-  static constexpr bool kKnown = true;
-  static double tan_theta(const Beckmann<double>& d) { return 1.0 / (6.5 * d.alpha); }
-};
+// Whether the batch loops read Smith G1 from a row (shadowing/smith_g1_row.h): every distribution
+// with a Λ table, except those whose closed-form Λ costs less than the row (kCheapLambda: GGX's is
+// one square root; Beckmann's erfc and exp cost more).
+template <template <class> class Ndf>
+constexpr bool kG1FromRow = SmithShape<Ndf>::kDims > 0 && !requires { Ndf<double>::kCheapLambda; };
 
 template <template <class> class Ndf, template <class> class Fresnel, Masking kMasking = Masking::SmithUncorrelated>
 struct CookTorrance {
@@ -84,22 +78,22 @@ struct CookTorrance {
     }
   }
 
-  // masking() for doubles in the batch loops, equal to it to the bit: G1 = 1 where SmithUnitBelow
-  // says Λ cannot change it (tan_unit: its bound for this distribution).
-  static double batch_masking(const Ndf<double>& ndf, double tan_unit, double ci, double co, double ch, double cd) {
-    if constexpr (kMasking == Masking::SmithUncorrelated && SmithUnitBelow<Ndf>::kKnown) {
-      auto g1 = [&](double c) {
-        const double t = smith_tan_theta<Ndf<double>>(c);
-        return c > 0.0 && t < tan_unit ? 1.0 : smith_g1(ndf, c);
-      };
-      return g1(ci) * g1(co);
+  // masking() for doubles in the batch loops: from the G1 row where the distribution has one
+  // (kG1FromRow, within smith_g1_row.h's bound of masking()), masking() itself otherwise.
+  static double batch_masking(const Ndf<double>& ndf, const SmithG1Row* row, double ci, double co, double ch,
+                              double cd) {
+    if constexpr (kG1FromRow<Ndf> && kMasking != Masking::VGroove) {
+      const double gi = row->g1(ci), go = row->g1(co);
+      if constexpr (kMasking == Masking::SmithUncorrelated) return gi * go;
+      else return gi > 0 && go > 0 ? 1 / (1 / gi + 1 / go - 1) : 0.0;  // 1/(1 + Λi + Λo), Λ = 1/G1 − 1
     } else {
       return masking(ndf, ci, co, ch, cd);
     }
   }
 
   // The batch loop with N = 1 or 2 Fresnel terms (out1 unused for N = 1): eval_at's body without
-  // its early return, every product in eval_at's order, so each output equals eval_at to the bit.
+  // its early return, every product in eval_at's order, so each output equals eval_at to the bit
+  // (up to the G1 row where Λ is numeric, see batch_masking).
   // Every lane computes and the horizon test selects at the end; `&` (not `&&`) keeps the loads of
   // wi_z and wo_z unconditional: a short-circuit test makes GCC sink the wo_z load under a branch,
   // and a load that "could trap" blocks if-conversion and leaves the loop scalar (DESIGN.md §12;
@@ -114,14 +108,15 @@ struct CookTorrance {
                                           double* __restrict out0, double* __restrict out1) {
     const Ndf<double> ndf(p + kNdfOffset);
     const double kd_pi = p[0] * kInvPi, ks = p[1];
-    const double tan_unit = SmithUnitBelow<Ndf>::tan_theta(ndf);
+    const SmithG1Row* row = nullptr;
+    if constexpr (kG1FromRow<Ndf> && kMasking != Masking::VGroove) row = &smith_g1_row(ndf);
     for (std::size_t k = 0; k < n; ++k) {
       const double ix = wix[k], iy = wiy[k], iz = wiz[k], ox = wox[k], oy = woy[k], oz = woz[k];
       const bool above = (iz > 0.0) & (oz > 0.0);
       const double hx = ix + ox, hy = iy + oy, hz = iz + oz;
       const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
       const double ch = hz / len, cd = 0.5 * len;
-      const double d = ndf.D(ch), g = batch_masking(ndf, tan_unit, iz, oz, ch, cd), den = 4.0 * iz * oz;
+      const double d = ndf.D(ch), g = batch_masking(ndf, row, iz, oz, ch, cd), den = 4.0 * iz * oz;
       out0[k] = above ? kd_pi + ks * (fresnel[0].eval(cd) * d * g / den) : 0.0;  // seed 004 Eq. 1
       if constexpr (N == 2) out1[k] = above ? kd_pi + ks * (fresnel[1].eval(cd) * d * g / den) : 0.0;
     }

@@ -31,6 +31,8 @@ template <class T> struct Ggx {
     return std::sqrt(s2 / (std::sqrt(2.0) - 1 + s2));
   }
   T alpha;  // Sawicki's C_TR; Disney roughness r maps to α = r² (DESIGN.md §3)
+  // Its closed-form Λ (one square root) is cheaper than a G1 row (models/cook_torrance.h).
+  static constexpr bool kCheapLambda = true;
 
   static ParamTable params() {
     return {{"alpha", 1e-3, 2.0, 0.2, Scope::Shared, false, "GGX / Trowbridge-Reitz width C_TR (seed 000 Table 1)"}};

@@ -29,12 +29,13 @@ template <class T> struct Sgd {
   }
   explicit Sgd(const T* params) : alpha(params[0]), p(params[1]), K(T(1) / (alpha * upper_gamma<T>(T(1) - p, alpha))) {}
 
-  // K e^{−t} t^{−p}/π, t = α + x/α: the published form, free of α^{p−1} over/underflow.
+  // K e^{−t} t^{−p}/π = K e^{−t − p ln t}/π, t = α + x/α: the published form, free of α^{p−1}
+  // over/underflow, with one exp and one log (a pow would cost both again).
   T P22(const T& x) const {
     using std::exp;
-    using std::pow;
+    using std::log;
     const T t = alpha + x / alpha;
-    return K * exp(-t) / (pow(t, p) * T(kPi));
+    return K * exp(-t - p * log(t)) / T(kPi);
   }
   T D(const T& cos_theta) const {
     if (!(cos_theta > T(0))) return T(0);
