@@ -7,6 +7,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libssl-dev
+  libopenexr-dev libstb-dev
+  chromium
 )
 missing=()
 for p in "${packages[@]}"; do

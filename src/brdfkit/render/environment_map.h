@@ -1,0 +1,43 @@
+#pragma once
+// Distant lighting from an equirectangular (latitude-longitude) HDR map, with the map convention
+// of Mitsuba 3's `envmap` (DESIGN.md §13): world y up; a direction d from the surface towards the
+// light reads pixel (u W, v H) with u = atan2(d.x, −d.z)/(2π) wrapped to [0, 1), v = acos(d.y)/π.
+// A pixel's radiance holds over its whole solid angle (nearest-pixel look-up), so the sampling
+// density of pbrt-v3 §14.2.4 — pixel luminance × sin θ, piecewise constant — is proportional to
+// the radiance it samples, up to the sin θ of the row centre.
+#include "brdfkit/core/vec.h"
+#include "brdfkit/render/image.h"
+#include "brdfkit/render/piecewise_constant_2d.h"
+
+namespace brdfkit::render {
+
+class EnvironmentMap {
+ public:
+  // The same radiance from every direction (the furnace test's light); the renderer samples it by
+  // the cosine of the surface it lights (sphere_renderer.h), not through a map.
+  static EnvironmentMap constant(const Rgb& radiance);
+  // `map` holds linear radiance; it is turned by `rotation_deg` about the world y axis (positive:
+  // counter-clockwise seen from above) and multiplied by `intensity`. InputError for an empty map
+  // or one with negative or non-finite values.
+  EnvironmentMap(Image map, double rotation_deg, double intensity);
+
+  bool is_constant() const { return constant_; }
+  // Whether sample() may be called: a map (not a constant) with some light in it.
+  bool samplable() const { return !constant_ && distribution_.valid(); }
+  Rgb radiance(const Vec3d& d) const;
+  // A direction with density *pdf per unit solid angle; pdf(d) = p(u, v) / (2π² sin θ).
+  Vec3d sample(const Vec2d& u, double* pdf) const;
+  double pdf(const Vec3d& d) const;
+
+ private:
+  EnvironmentMap() = default;
+  Vec2d to_map(const Vec3d& d, double* sin_theta) const;
+
+  bool constant_ = false;
+  Rgb constant_radiance_ = Rgb::Zero();
+  Image map_;
+  double cos_rot_ = 1, sin_rot_ = 0;
+  PiecewiseConstant2D distribution_;
+};
+
+}  // namespace brdfkit::render
