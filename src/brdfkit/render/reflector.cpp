@@ -22,7 +22,7 @@ class MeasuredReflector final : public Reflector {
  public:
   MeasuredReflector(const MeasuredBrdf& data, const std::optional<Brdf>& proxy) : data_(data), proxy_(proxy) {}
   Rgb eval(const Vec3d& wi, const Vec3d& wo) const override {
-    const std::optional<Rgb> v = data_.eval(wi, wo);
+    const std::optional<Rgb> v = data_.eval(wo, wi);  // conditioned on the view direction (reflector.h)
     return v ? Rgb(v->cwiseMax(0.0)) : Rgb(Rgb::Zero());
   }
   std::optional<Vec3d> sample(const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
