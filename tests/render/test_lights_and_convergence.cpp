@@ -118,7 +118,7 @@ TEST(EnvironmentSampling, DensityIntegratesToOneAndMatchesSamples) {
       integral += env.pdf(Vec3d(std::sin(t) * std::cos(p), std::cos(t), std::sin(t) * std::sin(p))) * std::sin(t) *
                   (kPi / nt) * (2 * kPi / np);
     }
-  EXPECT_NEAR(integral, 1.0, 1e-9);
+  EXPECT_NEAR(integral, 1.0, 1e-6);  // p(u, v) is stored in float
   // Every sample's reported density is pdf() at that direction, and the samples estimate
   // ∫ L dω without bias (the sampled direction reads the pixel its density was built from).
   double direct = 0;
@@ -136,7 +136,7 @@ TEST(EnvironmentSampling, DensityIntegratesToOneAndMatchesSamples) {
     double p = 0;
     const Vec3d d = env.sample(Vec2d(u(rng), u(rng)), &p);
     EXPECT_NEAR(d.norm(), 1.0, 1e-12);
-    EXPECT_NEAR(p, env.pdf(d), 1e-9 * p);
+    EXPECT_NEAR(p, env.pdf(d), 1e-6 * p);  // the map stores p(u, v) in float
     estimate += luminance(env.radiance(d)) / p / n;
   }
   EXPECT_NEAR(estimate, direct, 0.01 * direct);

@@ -14,22 +14,31 @@ EnvironmentMap EnvironmentMap::constant(const Rgb& radiance) {
   return e;
 }
 
-EnvironmentMap::EnvironmentMap(Image map, double rotation_deg, double intensity) : map_(std::move(map)) {
-  if (map_.width < 2 || map_.height < 1) throw InputError("environment map", "empty image");
+EnvironmentMap::EnvironmentMap(Image map, double rotation_deg, double intensity)
+    : width_(map.width), height_(map.height), texels_(map.size()) {
+  if (map.width < 2 || map.height < 1) throw InputError("environment map", "empty image");
   if (!std::isfinite(intensity) || intensity < 0) throw InputError("environment intensity", "must be finite and >= 0");
-  std::vector<double> weights(map_.size());
-  for (int y = 0; y < map_.height; ++y) {
-    const double sin_theta = std::sin(kPi * (y + 0.5) / map_.height);
-    for (int x = 0; x < map_.width; ++x) {
-      Rgb& v = map_.at(x, y);
-      if (!v.allFinite() || (v < 0).any())
-        throw InputError("environment map", "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                                ") is negative or not finite");
-      v *= intensity;
-      weights[size_t(y) * size_t(map_.width) + size_t(x)] = luminance(v) * sin_theta;
+  std::vector<double> weights(map.size());
+  for (int y = 0; y < map.height; ++y) {
+    const double sin_theta = std::sin(kPi * (y + 0.5) / map.height);
+    for (int x = 0; x < map.width; ++x) {
+      Rgb& v = map.at(x, y);
+      if (!v.allFinite())
+        throw InputError("environment map", "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is not finite");
+      // Lossy EXR compression (DWAB, as in ../shared/data/envmaps) leaves small negative values
+      // near dark edges; radiance cannot be negative.
+      negative_pixels_ += (v < 0).any();
+      v = v.cwiseMax(0.0) * intensity;
+      weights[size_t(y) * size_t(map.width) + size_t(x)] = luminance(v) * sin_theta;
     }
   }
-  distribution_ = PiecewiseConstant2D(weights, map_.width, map_.height);
+  distribution_ = PiecewiseConstant2D(weights, map.width, map.height);
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x) {
+      const Rgb& v = map.at(x, y);
+      const Vec2d centre((x + 0.5) / map.width, (y + 0.5) / map.height);
+      texels_[size_t(y) * size_t(map.width) + size_t(x)] = {float(v[0]), float(v[1]), float(v[2]), float(distribution_.pdf(centre))};
+    }
   cos_rot_ = std::cos(rotation_deg * kPi / 180);
   sin_rot_ = std::sin(rotation_deg * kPi / 180);
 }
@@ -44,12 +53,14 @@ Vec2d EnvironmentMap::to_map(const Vec3d& d, double* sin_theta) const {
   return Vec2d(std::min(u, 1.0 - 1e-12), std::acos(cos_t) / kPi);
 }
 
-Rgb EnvironmentMap::radiance(const Vec3d& d) const {
-  if (constant_) return constant_radiance_;
-  double s = 0;
-  const Vec2d uv = to_map(d, &s);
-  const int x = std::min(int(uv.x() * map_.width), map_.width - 1), y = std::min(int(uv.y() * map_.height), map_.height - 1);
-  return map_.at(x, y);
+EnvironmentMap::Texel EnvironmentMap::lookup(const Vec3d& d) const {
+  if (constant_) return {constant_radiance_, 0.0};
+  double sin_theta = 0;
+  const Vec2d uv = to_map(d, &sin_theta);
+  const int x = std::min(int(uv.x() * width_), width_ - 1), y = std::min(int(uv.y() * height_), height_ - 1);
+  const Packed& t = texels_[size_t(y) * size_t(width_) + size_t(x)];
+  const double pdf = sin_theta > 0 && distribution_.valid() ? t.pdf_uv / (2 * kPi * kPi * sin_theta) : 0;
+  return {Rgb(t.r, t.g, t.b), pdf};
 }
 
 Vec3d EnvironmentMap::sample(const Vec2d& u, double* pdf) const {
@@ -61,13 +72,6 @@ Vec3d EnvironmentMap::sample(const Vec2d& u, double* pdf) const {
   const Vec3d m(sin_t * std::sin(phi), std::cos(theta), -sin_t * std::cos(phi));
   *pdf = sin_t > 0 ? p_uv / (2 * kPi * kPi * sin_t) : 0;
   return Vec3d(cos_rot_ * m.x() + sin_rot_ * m.z(), m.y(), -sin_rot_ * m.x() + cos_rot_ * m.z());
-}
-
-double EnvironmentMap::pdf(const Vec3d& d) const {
-  if (!samplable()) return 0;
-  double s = 0;
-  const Vec2d uv = to_map(d, &s);
-  return s > 0 ? distribution_.pdf(uv) / (2 * kPi * kPi * s) : 0;
 }
 
 }  // namespace brdfkit::render

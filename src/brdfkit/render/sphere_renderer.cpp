@@ -5,7 +5,6 @@
 
 #include <atomic>
 #include <mutex>
-#include <random>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/warp.h"
@@ -21,9 +20,11 @@ std::uint64_t mix(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
+// SplitMix64 as the generator too (it passes BigCrush; Steele et al. 2014): a pixel's stream is
+// its seed's Weyl sequence through the mixer, so starting a stream costs nothing.
 struct Sampler {
-  std::mt19937_64 engine;
-  double next() { return double(engine() >> 11) * 0x1p-53; }
+  std::uint64_t state;
+  double next() { return double(mix(state += 0x9e3779b97f4a7c15ull) >> 11) * 0x1p-53; }
   Vec2d next2() {
     const double a = next();
     return Vec2d(a, next());
@@ -48,8 +49,11 @@ LightDraw draw_light(const EnvironmentMap& env, const SphereHit& hit, const Vec2
   const Vec3d d = env.sample(u, &pdf);
   return {hit.to_local_dir(d), pdf};
 }
-double light_pdf(const EnvironmentMap& env, const SphereHit& hit, const Vec3d& wi) {
-  return env.is_constant() ? cosine_hemisphere_pdf(wi) : env.pdf(hit.to_world(wi));
+// Radiance towards wi and the environment strategy's density there.
+EnvironmentMap::Texel light_at(const EnvironmentMap& env, const SphereHit& hit, const Vec3d& wi) {
+  EnvironmentMap::Texel t = env.lookup(hit.to_world(wi));
+  if (env.is_constant()) t.pdf = cosine_hemisphere_pdf(wi);
+  return t;
 }
 
 // One sample of the environment integral at a hit: an environment draw and a reflector draw,
@@ -69,8 +73,10 @@ Rgb environment_sample(const Reflector& r, const EnvironmentMap& env, const Sphe
   const std::optional<Vec3d> wi = r.sample(wo, u, s.next());
   if (wi && wi->z() > 0) {
     const double pb = r.pdf(wo, *wi);
-    if (pb > 0)
-      sum += r.eval(*wi, wo) * env.radiance(hit.to_world(*wi)) * (wi->z() * power_weight(pb, light_pdf(env, hit, *wi)) / pb);
+    if (pb > 0) {
+      const EnvironmentMap::Texel t = light_at(env, hit, *wi);
+      sum += r.eval(*wi, wo) * t.radiance * (wi->z() * power_weight(pb, t.pdf) / pb);
+    }
   }
   return sum;
 }
@@ -92,7 +98,7 @@ struct PixelEstimate {
 
 PixelEstimate render_pixel(const Reflector& r, const Scene& scene, const Camera& cam, const RenderSettings& st, int x,
                            int y) {
-  Sampler s{std::mt19937_64(mix(st.seed ^ mix(std::uint64_t(y) * std::uint64_t(st.width) + std::uint64_t(x))))};
+  Sampler s{mix(st.seed ^ mix(std::uint64_t(y) * std::uint64_t(st.width) + std::uint64_t(x)))};
   PixelEstimate p;
   Rgb mean = Rgb::Zero(), m2 = Rgb::Zero();  // Welford's running moments
   int n = 0;
