@@ -1,4 +1,4 @@
-// `brdfkit render [INPUTS…] [MODEL --param … | --params FILE [--material NAME]] -o OUT.png`:
+// `brdfkit render [INPUTS…] [--model M --param … | --params FILE [--material NAME]] -o OUT.png`:
 // spheres of measured data and of fits side by side (render/comparison.h), lit by an
 // equirectangular HDR map (--env), a constant environment (--env-constant) and/or distant point
 // lights (--light θ,φ[,I]); with none of them, the built-in light setup (render/scene.h). INPUTS
@@ -124,7 +124,11 @@ const CommandRegistration reg("render", [](CLI::App& app) {
                 "CIEDE2000 error images");
   auto a = std::make_shared<RenderArgs>();
   sub->add_option("INPUTS", a->inputs, "Measured files (the first is the reference) and/or fit JSONs, in panel order");
-  add_brdf_options(sub, a->brdf);
+  // The BRDF options of eval/tabulate, with the model as an option: INPUTS takes the positionals.
+  sub->add_option("--model", a->brdf.model, "A model name (see `brdfkit models`) rendered with its --param values");
+  sub->add_option("--param", a->brdf.params, "name=value, name[r|g|b]=value or name=r,g,b for --model or --params; repeatable");
+  sub->add_option("--params,-p", a->brdf.params_file, "A fit saved by `brdfkit fit`, or a published-fits file (with --material)");
+  sub->add_option("--material", a->brdf.material, "The material of a published-fits file");
   sub->add_option("--env", a->env, "Equirectangular HDR environment map (.exr or .hdr), linear radiance");
   sub->add_option("--env-constant", a->env_constant, "A constant environment of this radiance instead of a map");
   sub->add_option("--env-rotation", a->env_rotation, "Turn the map about the vertical axis (degrees)")->capture_default_str();
