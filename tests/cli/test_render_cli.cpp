@@ -49,8 +49,9 @@ TEST(RenderCli, PointLightExactAndThreadCountIndependent) {
   const auto one = test::run_cli("render --model lambert --param kd=0.6 --light 0,0,2 --size 9 --spp 2 -q --threads 1 -o " + (dir / "a.png").string());
   ASSERT_EQ(one.exit_code, 0) << one.err;
   const render::Image a = render::read_hdr_image(dir / "a.exr");
-X
-  // jittered footprint (exactness without jitter: tests/render/test_lights_and_convergence.cpp).
+  // The centre pixel faces the camera and the light: 2 · 0.6/π · cos θ, θ ≤ 10° over the pixel's
+  // jittered footprint on a sphere 8.5 pixels wide (exact without jitter:
+  // tests/render/test_lights_and_convergence.cpp).
   EXPECT_NEAR(a.at(4, 4)[0], 2 * 0.6 / kPi, 2 * 0.6 / kPi * (1 - std::cos(10 * kPi / 180)));
   EXPECT_LE(a.at(4, 4)[0], 2 * 0.6 / kPi * (1 + 1e-6));
   ASSERT_EQ(test::run_cli("render --model cook-torrance-ggx --env-constant 1 --size 12 --spp 8 -q --threads 1 -o " + (dir / "b.png").string()).exit_code, 0);
