@@ -60,31 +60,29 @@ struct Subjects {
 };
 Subjects load_subjects(const RenderArgs& a) {
   if (a.proxy != "auto" && a.proxy != "cosine") throw InputError("--proxy", "expected auto or cosine");
+  struct Entry {
+    std::string source;
+    std::optional<Brdf> fit;  // nullopt: the measured file data[measured]
+    size_t measured = 0;
+  };
   Subjects s;
-  std::vector<std::pair<std::string, Brdf>> fits;
-  std::vector<size_t> order;  // index into data (measured) or fits (+1000000)
-  constexpr size_t kFit = 1000000;
+  std::vector<Entry> entries;
   for (const std::string& in : a.inputs) {
     if (fs::path(in).extension() == ".json") {
-      fits.emplace_back(in, fit::load_params(in, "").brdf);
-      order.push_back(kFit + fits.size() - 1);
+      entries.push_back({in, fit::load_params(in, "").brdf});
     } else {
       s.data.push_back(load_measured(in));
-      order.push_back(s.data.size() - 1);
+      entries.push_back({in, std::nullopt, s.data.size() - 1});
     }
   }
-  if (!a.brdf.model.empty() || !a.brdf.params_file.empty()) {
-    fits.emplace_back(a.brdf.params_file.empty() ? a.brdf.model : a.brdf.params_file, a.brdf.brdf());
-    order.push_back(kFit + fits.size() - 1);
-  }
-  const std::optional<Brdf> proxy = a.proxy == "auto" && !fits.empty() ? std::optional<Brdf>(fits.front().second) : std::nullopt;
-  for (size_t k : order) {
-    if (k >= kFit) {
-      const auto& [source, b] = fits[k - kFit];
-      s.list.push_back({std::string(b.model().name()), source, false, render::model_reflector(b)});
-    } else {
-      s.list.push_back({"measured", s.data[k]->path(), true, render::measured_reflector(*s.data[k], proxy)});
-    }
+  if (!a.brdf.model.empty() || !a.brdf.params_file.empty())
+    entries.push_back({a.brdf.params_file.empty() ? a.brdf.model : a.brdf.params_file, a.brdf.brdf()});
+  std::optional<Brdf> proxy;
+  for (const Entry& e : entries)
+    if (e.fit && !proxy && a.proxy == "auto") proxy = e.fit;
+  for (const Entry& e : entries) {
+    if (e.fit) s.list.push_back({std::string(e.fit->model().name()), e.source, false, render::model_reflector(*e.fit)});
+    else s.list.push_back({"measured", e.source, true, render::measured_reflector(*s.data[e.measured], proxy)});
   }
   return s;
 }
