@@ -7,6 +7,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libssl-dev
+  libopenexr-dev libstb-dev
+  chromium
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -19,3 +21,16 @@ if ((${#missing[@]})); then
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 echo "setup: all ${#packages[@]} packages present"
+
+# Web parts (package.json, package-lock.json): Apache ECharts, compiled into brdfkit and shipped in
+# every report, and playwright-core, which drives Debian's chromium in the report test. Node.js and
+# npm from Debian where the machine has none.
+root=$(cd "$(dirname "$0")/.." && pwd)
+if ! command -v npm >/dev/null; then
+  if [[ $(id -u) -ne 0 ]]; then SUDO=sudo; else SUDO=; fi
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nodejs npm
+fi
+if [[ ! -f "$root/node_modules/.package-lock.json" || "$root/package-lock.json" -nt "$root/node_modules/.package-lock.json" ]]; then
+  (cd "$root" && npm ci --no-audit --no-fund --loglevel=error)
+fi
+echo "setup: npm packages present ($(cd "$root" && node -p "Object.keys(require('./package-lock.json').packages).length - 1") from package-lock.json)"
