@@ -56,7 +56,8 @@ const CommandRegistration reg("fit-all", [](CLI::App& app) {
       ->required();
   sub->add_option("--models", a->models,
                   "Comma-separated model names, 'all' (the catalogue) or 'single-lobe' (models with exactly one "
-                  "specular lobe: one per-channel linear lobe scale besides kd, see models/model_sets.h)")
+                  "specular lobe: one per-channel linear lobe scale besides kd, see models/model_sets.h) or 'renderer' "
+                  "(the renderers' own BSDFs)")
       ->capture_default_str();
   auto* proc = sub->add_option("--procedure", a->procedure,
                                "Fitting procedure: ngan, bagher, low-e1, low-e2, hp-2step, hp-1step (DESIGN.md §8)");

@@ -18,6 +18,13 @@
 #include "brdfkit/models/published_fits.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
+#include "brdfkit/models/disney_principled.h"
+#include "brdfkit/models/gltf_metallic_roughness.h"
+#include "brdfkit/models/mitsuba_principled.h"
+#include "brdfkit/models/mitsuba_roughconductor.h"
+#include "brdfkit/models/pbrt_conductor.h"
+#include "brdfkit/models/pbrt_diffuse.h"
+#include "brdfkit/models/pbrt_mix.h"
 #include "brdfkit/models/model.h"
 
 namespace brdfkit {
@@ -58,6 +65,16 @@ std::span<const Model* const> all_models() {
       holzschuch_pacanowski_model(),
       low_cook_torrance_model(),
       bagher_sgd_model(),
+      // Renderers' own BSDFs, evaluated as the renderer does (models/model_sets.h: `renderer`).
+      instance<GltfMetallicRoughness>(),
+      instance<MitsubaRoughConductorBeckmann>(),
+      instance<MitsubaRoughConductorGgx>(),
+      instance<MitsubaPrincipled>(),
+      instance<PbrtConductor>(),
+      instance<PbrtConductorReflectance>(),
+      instance<PbrtDiffuse>(),
+      instance<PbrtMixDiffuseConductor>(),
+      instance<DisneyPrincipled>(),
   };
   return models;
 }
