@@ -7,6 +7,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libssl-dev
+  libtinygltf-dev glslang-tools libosmesa6-dev
 )
 missing=()
 for p in "${packages[@]}"; do
