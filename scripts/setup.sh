@@ -19,4 +19,10 @@ if ((${#missing[@]})); then
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+# The Khronos glTF validator (npm), for the glTF export test; the test skips without it.
+root=$(cd "$(dirname "$0")/.." && pwd)
+if command -v npm >/dev/null && [[ ! -f "$root/tools/node_modules/gltf-validator/index.js" ]]; then
+  npm install --silent --no-audit --no-fund --prefix "$root/tools" gltf-validator@2.0.0-dev.3.10 >/dev/null 2>&1 ||
+    echo "setup: npm could not install gltf-validator (the glTF export test will skip the validator)"
+fi
 echo "setup: all ${#packages[@]} packages present"
