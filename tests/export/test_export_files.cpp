@@ -145,7 +145,7 @@ TEST(ExportFiles, EveryGlslModelCompiles) {
     EXPECT_EQ(be.rfind("analytic\n", 0), 0u);
     EXPECT_NE(be.find("vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)"), std::string::npos);
   }
-  EXPECT_THROW(exporter::glsl_functions(model_by_name("he-torrance")), InputError);
+  EXPECT_THROW(exporter::glsl_functions(model_by_name("he")), InputError);
 }
 
 // A model the target holds exactly comes back from the refit with (nearly) no added error.
