@@ -9,6 +9,7 @@ packages=(
   libssl-dev
   libopenexr-dev libstb-dev
   chromium
+  libtinygltf-dev glslang-tools libosmesa6-dev
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -23,7 +24,8 @@ fi
 echo "setup: all ${#packages[@]} packages present"
 
 # Web parts (package.json, package-lock.json): Apache ECharts, compiled into brdfkit and shipped in
-# every report, and playwright-core, which drives Debian's chromium in the report test. Node.js and
+# every report; playwright-core, which drives Debian's chromium in the report test; the Khronos
+# glTF validator, which checks the glTF export in its test. Node.js and
 # npm from Debian where the machine has none.
 root=$(cd "$(dirname "$0")/.." && pwd)
 if ! command -v npm >/dev/null; then

@@ -17,6 +17,9 @@ TEST(ModelSets, LobeCountsAndSetsComeFromTheParameterTables) {
   EXPECT_EQ(all.size(), all_models().size());
   EXPECT_EQ(single.size(), 23u);  // the README's count of single-lobe models
   for (const Model* m : single) EXPECT_EQ(lobe_count(*m), 1) << m->name();
+  const auto renderer = parse_model_set("renderer");
+  EXPECT_EQ(renderer.size(), 9u);
+  for (const Model* m : renderer) EXPECT_TRUE(is_renderer_model(*m)) << m->name();
   const auto list = parse_model_set("ward,lambert,ward");
   ASSERT_EQ(list.size(), 2u);
   EXPECT_EQ(list[0]->name(), "ward");

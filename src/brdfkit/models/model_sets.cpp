@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string_view>
 
 #include "brdfkit/core/error.h"
 
@@ -17,6 +18,12 @@ int lobe_count(const Model& model) {
   return scales > 0 ? scales : (shape ? 1 : 0);
 }
 
+bool is_renderer_model(const Model& model) {
+  for (std::string_view prefix : {"gltf-", "mitsuba-", "pbrt-", "disney-"})
+    if (model.name().starts_with(prefix)) return true;
+  return false;
+}
+
 std::vector<const Model*> parse_model_set(const std::string& spec) {
   std::vector<const Model*> out;
   if (spec == "all") {
@@ -25,7 +32,12 @@ std::vector<const Model*> parse_model_set(const std::string& spec) {
   }
   if (spec == "single-lobe") {
     for (const Model* m : all_models())
-      if (lobe_count(*m) == 1) out.push_back(m);
+      if (lobe_count(*m) == 1 && !is_renderer_model(*m)) out.push_back(m);
+    return out;
+  }
+  if (spec == "renderer") {
+    for (const Model* m : all_models())
+      if (is_renderer_model(*m)) out.push_back(m);
     return out;
   }
   std::stringstream ss(spec);

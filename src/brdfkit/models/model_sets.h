@@ -16,7 +16,13 @@ namespace brdfkit {
 
 int lobe_count(const Model& model);
 
-// "all" (every catalogue model), "single-lobe" (lobe_count == 1) or a comma-separated list of
+// Whether the model is a renderer's own BSDF (glTF, Mitsuba 3, pbrt-v4, Disney BRDF Explorer: the
+// `gltf-`, `mitsuba-`, `pbrt-` and `disney-` models). Those form the set "renderer" and are not
+// in "single-lobe", whose members share brdfkit's kd + lobe parameterization.
+bool is_renderer_model(const Model& model);
+
+// "all" (every catalogue model), "single-lobe" (lobe_count == 1, renderer models excluded),
+// "renderer" (is_renderer_model) or a comma-separated list of
 // model names; registry order for the sets, the given order for a list (duplicates dropped).
 // InputError for an unknown name or an empty list.
 std::vector<const Model*> parse_model_set(const std::string& spec);

@@ -19,6 +19,13 @@
 #include "brdfkit/models/published_fits.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
+#include "brdfkit/models/disney_principled.h"
+#include "brdfkit/models/gltf_metallic_roughness.h"
+#include "brdfkit/models/mitsuba_principled.h"
+#include "brdfkit/models/mitsuba_roughconductor.h"
+#include "brdfkit/models/pbrt_conductor.h"
+#include "brdfkit/models/pbrt_diffuse.h"
+#include "brdfkit/models/pbrt_mix.h"
 #include "brdfkit/models/model.h"
 
 namespace brdfkit {
@@ -41,6 +48,12 @@ const Registry<const Model*>& model_registry() {
                            instance<AshikhminShirleyDielectric>(), instance<HeTorrance>(), instance<LowSmooth>(),
                            instance<LowSmooth2>(), low_microfacet_model(), holzschuch_pacanowski_model(),
                            low_cook_torrance_model(), bagher_sgd_model()})
+      add(m);
+    // The renderers' own BSDFs (models/<renderer>_*.h), each as its renderer evaluates it.
+    for (const Model* m : {instance<GltfMetallicRoughness>(), instance<MitsubaRoughConductorBeckmann>(),
+                           instance<MitsubaRoughConductorGgx>(), instance<MitsubaPrincipled>(), instance<PbrtConductor>(),
+                           instance<PbrtConductorReflectance>(), instance<PbrtDiffuse>(),
+                           instance<PbrtMixDiffuseConductor>(), instance<DisneyPrincipled>()})
       add(m);
     return r;
   }();

@@ -1,0 +1,59 @@
+// `brdfkit export`: a fit in the target's own model is written exactly and reads back to its
+// values; bad input (unknown target, a model without a GLSL form, --for a non-renderer) is a
+// one-line message with exit code 2 and no file written.
+#include <gtest/gtest.h>
+
+#include "brdfkit/export/gltf_material.h"
+#include "brdfkit/fit/fit_record.h"
+#include "support/test_util.h"
+
+namespace brdfkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path saved_fit(const fs::path& dir, const char* model, const std::vector<std::pair<std::string, double>>& values) {
+  fit::FitRecord r;
+  r.model = model;
+  const Model& m = model_by_name(model);
+  r.values = ParamValues::defaults(m.params());
+  for (const auto& [name, v] : values) r.values.set(m.params(), name, v);
+  r.fit_metric = "ngan";
+  r.data_file = "synthetic";
+  const fs::path f = dir / (std::string(model) + ".json");
+  fit::save_fit_record(f, r);
+  return f;
+}
+
+TEST(ExportCli, OwnModelExportsExactlyAndReadsBack) {
+  const fs::path dir = test::scratch_dir("export_cli");
+  const fs::path fit = saved_fit(dir, "gltf-metallic-roughness", {{"base_color", 0.25}, {"roughness", 0.375}, {"metallic", 0.5}});
+  const auto r = test::run_cli("export " + fit.string() + " --to gltf -o " + (dir / "m.gltf").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("exported exactly"), std::string::npos) << r.out;
+  const ParamValues back = exporter::read_gltf_material(dir / "m.gltf");
+  EXPECT_EQ(back.values[0][0], 0.25);
+  EXPECT_EQ(back.values[2][2], 0.375);
+  const fs::path mitsuba = saved_fit(dir, "mitsuba-principled", {{"roughness", 0.3}});
+  const auto m = test::run_cli("export " + mitsuba.string() + " --to mitsuba3 -o " + (dir / "m.xml").string());
+  EXPECT_EQ(m.exit_code, 0) << m.err;
+  EXPECT_TRUE(fs::exists(dir / "m_scene.xml"));
+  fs::remove_all(dir);
+}
+
+TEST(ExportCli, BadInputExitsWithTwoAndWritesNothing) {
+  const fs::path dir = test::scratch_dir("export_cli_bad");
+  const fs::path he = saved_fit(dir, "he", {});
+  for (const std::string& args : {"export " + he.string() + " --to blender -o " + (dir / "x").string(),
+                                  "export " + he.string() + " --to glsl -o " + (dir / "x").string(),
+                                  "fit " + he.string() + " --for glsl -o " + (dir / "x").string()}) {
+    const auto r = test::run_cli(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x")) << args;
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace brdfkit
