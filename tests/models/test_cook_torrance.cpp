@@ -114,13 +114,19 @@ TEST(CookTorrance, EvalBatchMatchesEval) {
   }
   for_each_cook_torrance([&](auto m) {
     using M = decltype(m);
+    // Where the batch loop reads Smith G1 from a row (shadowing/smith_g1_row.h, |ΔG1| < 1e-6), the
+    // specular part may move by 2e-6 of itself; elsewhere the loop is eval's arithmetic.
+    constexpr bool kFromRow = kG1FromRow<M::template Distribution> && M::kMaskingTerm != Masking::VGroove;
     for (const auto& set : test::model_param_sets(ModelAdapter<M>())) {
       for (int c = 0; c < 3; ++c) {
+        const double* p = set.values.channel(c);
         std::vector<double> out(s.size());
-        M::eval_batch(set.values.channel(c), c, s, out.data());
+        M::eval_batch(p, c, s, out.data());
         for (size_t k = 0; k < s.size(); ++k) {
-          const double want = M::template eval<double>(set.values.channel(c), c, s.wi(k), s.wo(k));
-          ASSERT_NEAR(out[k], want, 1e-14 * std::abs(want)) << M::name() << " " << set.label << " pair " << k;
+          const double want = M::template eval<double>(p, c, s.wi(k), s.wo(k));
+          const double lobe = s.wi(k).z() > 0 && s.wo(k).z() > 0 ? want - p[0] * kInvPi : want;
+          const double tol = kFromRow ? 2e-6 * std::abs(lobe) + 1e-15 : 1e-14 * std::abs(want);
+          ASSERT_NEAR(out[k], want, tol) << M::name() << " " << set.label << " pair " << k;
         }
       }
     }
