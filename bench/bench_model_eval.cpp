@@ -1,5 +1,5 @@
-// Evaluation throughput of kd/π + Cook-Torrance for every distribution of the catalogue (issue #3:
-// evaluations per second on one core), through the runtime Model::eval_batch that fitting uses
+// Evaluation throughput of kd/π + Cook-Torrance for every distribution of the catalogue:
+// evaluations per second on one core, through the runtime Model::eval_batch that fitting uses
 // (ModelAdapter → the static type's structure-of-arrays loop, one virtual call per sweep) over the
 // 1 458 000 direction pairs of a MERL grid (cell centres, DESIGN.md §2), three channels per sweep.
 // DESIGN.md §12's floor: 3.7 ms per sweep for GGX in double. Also the per-pair virtual

@@ -1,7 +1,7 @@
 // Render speed, one core: a 256 x 256 sphere at 64 spp under ../shared/data/envmaps/studio.exr
 // (a synthetic sky when absent) of a fitted model (GGX with the parameters `brdfkit fit` finds on
 // vch_golden_yellow) and of an RGL measurement (vch_golden_yellow, sampled through that fit), the
-// estimator of render/sphere_renderer.h. Targets (issue 15): model <= 3 s, RGL <= 10 s.
+// estimator of render/sphere_renderer.h. Targets: model <= 3 s, RGL <= 10 s.
 // Reproduce with:
 //   ninja -C <build> bench_render && <build>/bench/bench_render
 #include <benchmark/benchmark.h>

@@ -10,6 +10,7 @@ packages=(
   libopenexr-dev libstb-dev
   chromium
   libtinygltf-dev glslang-tools libosmesa6-dev
+  python3 time
 )
 missing=()
 for p in "${packages[@]}"; do

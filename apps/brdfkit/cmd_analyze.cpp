@@ -1,5 +1,5 @@
 // `brdfkit analyze FILE --what backscatter|fresnel|diffraction|albedo|ndf [--model M] [--params fit.json]
-// [--json | --csv] [-o FILE]`: observations from measured data (issue 6 item 2: seed 000 §4.1 Eq. 7
+// [--json | --csv] [-o FILE]`: observations from measured data (seed 000 §4.1 Eq. 7
 // and Eq. 10, seed 004 §4.2) and the tabulated-NDF estimation of seed 002 §5.1 (item 3). JSON and
 // CSV are for plotting; -o writes atomically (JSON, or CSV with --csv).
 #include <fmt/format.h>
@@ -19,6 +19,7 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/fit_record.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/engine/fit_model.h"
@@ -299,7 +300,8 @@ int run_analyze(const AnalyzeArgs& a) {
   static const std::set<std::string> kinds = {"backscatter", "fresnel", "diffraction", "albedo", "ndf"};
   if (!kinds.count(a.what))
     throw InputError("--what", "'" + a.what + "' is not one of backscatter, fresnel, diffraction, albedo, ndf");
-  if (a.coarsen < 1) throw InputError("--coarsen", "must be >= 1");
+  // The fits and metric grids made here take the fit settings' ranges (fit/settings/fit_settings.h).
+  fit::FitSettings{.coarsen = a.coarsen, .starts = a.starts}.validate();
   if (a.nodes < 0) throw InputError("--nodes", "must be >= 0");
   const auto data = load_measured(a.file);
   Output o;
@@ -310,7 +312,7 @@ int run_analyze(const AnalyzeArgs& a) {
   else o = ndf(a, *data);
   o.doc["version"] = BRDFKIT_VERSION;
   if (!o.doc.contains("data")) o.doc["data"] = {{"file", a.file}};
-  const std::string json_text = o.doc.dump(2) + "\n";
+  const std::string json_text = brdfkit::json_text(o.doc) + "\n";
   if (!a.output.empty()) write_file_atomically(a.output, a.csv ? o.csv : json_text);
   if (a.json) std::cout << json_text;
   else if (a.csv && a.output.empty()) std::cout << o.csv;
@@ -339,8 +341,13 @@ const CommandRegistration reg("analyze", [](CLI::App& app) {
   sub->add_option("--metric", a->metric, "ndf/fresnel: metric to estimate or fit under")->capture_default_str();
   sub->add_option("--report", a->report, "ndf: comma-separated metrics to report (default: --metric)");
   sub->add_option("--compare", a->compare, "ndf: comma-separated catalogue models to fit under the same metric");
-  sub->add_option("--starts", a->starts, "fits done here: number of starts")->capture_default_str();
-  sub->add_option("--coarsen", a->coarsen, "Metric grid coarsening (1 = the papers' grids)")->capture_default_str();
+  sub->add_option("--starts", a->starts,
+                  "fits done here: number of starts (1 to " + std::to_string(fit::FitSettings::kMaxStarts) + ")")
+      ->capture_default_str();
+  sub->add_option("--coarsen", a->coarsen,
+                  "Metric grid coarsening (1 = the papers' grids; 1 to " +
+                      std::to_string(fit::FitSettings::kMaxCoarsen) + ")")
+      ->capture_default_str();
   sub->add_option("--iterations", a->iterations, "ndf: masking iterations (seed 002: <= 5)")->capture_default_str();
   sub->add_option("--f0", a->f0, "ndf: Schlick F0 given (default: fitted)");
   sub->add_option("--nodes", a->nodes, "Grid size (backscatter/fresnel angles, ndf table nodes, diffraction cells)");

@@ -11,6 +11,7 @@
 #include "brdfkit/analysis/chi2_test.h"
 #include "brdfkit/analysis/model_checks.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/param_source.h"
 #include "brdfkit/models/microfacet_model.h"
 #include "brdfkit/models/model.h"
@@ -98,7 +99,7 @@ int run_check(const CheckOptions& o) {
   out["passed"] = passed;
 
   if (o.json) {
-    std::cout << out.dump(2) << "\n";
+    std::cout << json_text(out) << "\n";
   } else {
     std::cout << fmt::format("{}  ({} samples per chi2 test, seed {})\n", model.name(), o.samples, o.seed);
     for (size_t i = 0; i < table.size(); ++i)

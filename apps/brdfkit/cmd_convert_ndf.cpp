@@ -12,6 +12,7 @@
 
 #include "brdfkit/analysis/ndf_conversion.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 #include "command.h"
 
 namespace brdfkit::cli {
@@ -60,7 +61,7 @@ int run_table(const Options& o) {
                     {"m_G", {{"value", r.m_G}, {"rmse", r.rmse_G}}},
                     {"N_DS", {{"value", r.N_DS}, {"rmse", r.rmse_DS}}},
                     {"C_TR", {{"value", r.C_TR}, {"rmse", r.rmse_TR}}}});
-    std::cout << out.dump(2) << "\n";
+    std::cout << json_text(out) << "\n";
     return 0;
   }
   std::cout << "Seed 001 Table 2: Beckmann m_B approximated with least RMSE of D/D(0)\n"
@@ -102,7 +103,7 @@ int run_convert(const Options& o) {
         {"rmse", c.rmse},
         {"rmse_domain", domain_json(c.domain)},
         {"warnings", c.warnings}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << json_text(out) << "\n";
     return 0;
   }
   auto bh = [](const std::optional<double>& b) { return b ? fmt::format("{:.6g} rad", *b) : std::string("none"); };

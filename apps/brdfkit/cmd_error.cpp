@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "brdfkit/core/file_digest.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/fit_record.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/param_source.h"
@@ -45,7 +46,7 @@ int run_error(const ErrorArgs& a) {
       if (m.value) out["metrics"][m.id] = *m.value;
       else out["metrics"][m.id] = nullptr;
     }
-    std::cout << out.dump(2) << "\n";
+    std::cout << json_text(out) << "\n";
     return 0;
   }
   std::cout << fmt::format("model      {}\n", model.name());

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 #include "brdf_options.h"
 #include "command.h"
 
@@ -53,7 +54,7 @@ int run_eval(const EvalArgs& a) {
     for (size_t i = 0; i < t.size(); ++i)
       pj[t[i].name] = {brdf.values().values[0][i], brdf.values().values[1][i], brdf.values().values[2][i]};
     out["params"] = pj;
-    std::cout << out.dump(2) << "\n";
+    std::cout << json_text(out) << "\n";
   } else {
     std::cout << fmt::format("{:.10g} {:.10g} {:.10g}\n", rho[0], rho[1], rho[2]);
   }

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/export/export_fit.h"
 #include "brdfkit/fit/param_source.h"
 #include "command.h"
@@ -28,7 +29,7 @@ int run_export(const ExportArgs& a) {
   if (a.json) {
     nlohmann::json j = exporter::provenance_json(p);
     for (const auto& f : r.files) j["files"].push_back(f.string());
-    std::cout << j.dump(2) << "\n";
+    std::cout << json_text(j) << "\n";
     return 0;
   }
   std::cout << fmt::format("target     {}\n", p.target);

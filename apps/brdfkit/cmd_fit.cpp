@@ -18,6 +18,7 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/export/export_fit.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/export/export_fit.h"
@@ -83,6 +84,8 @@ int run_fit(const FitArgs& a) {
   const Model& model = model_for(a);
   const std::vector<std::string> report = fit::parse_metric_list(a.report);
   fit::validate(a.settings);  // names a bad setting before any work
+  check_output_file(a.output);  // and an output that cannot be written, before a fit of minutes
+  if (!a.for_target.empty()) check_output_file(export_path(a));
   const auto data = load_measured(a.file);
   // The fit and the reports share the metric domains they have in common (ngan, its albedo norm).
   fit::MetricStore store(*data);
@@ -96,14 +99,14 @@ int run_fit(const FitArgs& a) {
     return 1;
   }
   r.record.metrics = fit::report_metrics(store, model, r.record.values, report, fit::MetricOptions{a.settings.coarsen});
-  const nlohmann::json doc = fit::fit_job_json(r, a.settings);
-  write_file_atomically(a.output, doc.dump(2) + "\n");
+  const std::string doc = json_text(fit::fit_job_json(r, a.settings)) + "\n";
+  write_file_atomically(a.output, doc);
   std::vector<std::filesystem::path> exported;
   if (!a.for_target.empty())
     exported = exporter::export_fit(Brdf(model, r.record.values), r.record,
                                     exporter::parse_target(a.for_target, "--for"), export_path(a))
                    .files;
-  if (a.json) std::cout << doc.dump(2) << "\n";
+  if (a.json) std::cout << doc;
   else print_summary(r, a, model, exported);
   return 0;
 }

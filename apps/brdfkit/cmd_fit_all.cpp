@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/batch/fit_batch.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/models/model_sets.h"
@@ -32,7 +33,7 @@ int run_fit_all(FitAllArgs& a) {
                            models.size(), inputs.size() * models.size(), a.settings.jobs, a.output);
   const fit::BatchSummary s = fit::run_fit_batch(inputs, models, a.output, a.settings,
                                                  [](std::string_view line) { std::cerr << line << std::endl; });
-  if (a.json) std::cout << fit::summary_json(s).dump(2) << "\n";
+  if (a.json) std::cout << json_text(fit::summary_json(s)) << "\n";
   else std::cout << fit::summary_table(s);
   return s.count(fit::FitStatus::Failed) > 0 ? 1 : 0;
 }
@@ -51,7 +52,9 @@ const CommandRegistration reg("fit-all", [](CLI::App& app) {
   sub->add_option("--report", a->report,
                   "Metrics saved and tabulated besides the fitting metric ('all' adds hp-rmse: ~17 s of CPU a fit on RGL)")
       ->capture_default_str();
-  sub->add_option("--jobs,-j", a->settings.jobs, "Fits run at once (each fit is itself multi-threaded)")
+  sub->add_option("--jobs,-j", a->settings.jobs,
+                  "Fits run at once (each fit is itself multi-threaded; 1 to " +
+                      std::to_string(fit::BatchSettings::kMaxJobs) + ")")
       ->capture_default_str();
   sub->add_option("--compare", a->settings.compare,
                   "A published-fits file: its fit's error under the fitting metric for materials of that name");

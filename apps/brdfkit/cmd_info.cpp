@@ -20,6 +20,7 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"
@@ -229,9 +230,9 @@ int run_info(const Options& opt) {
                               {"command", "info"},
                               {"source", {{"kind", src.kind}, {"description", src.description}}},
                               {"files", files}};
-  if (!opt.out.empty()) write_file_atomically(opt.out, doc.dump(2) + "\n");
+  if (!opt.out.empty()) write_file_atomically(opt.out, json_text(doc) + "\n");
   if (opt.json) {
-    std::cout << doc.dump(2) << "\n";
+    std::cout << json_text(doc) << "\n";
   } else {
     for (size_t k = 0; k < results.size(); ++k) {
       if (k) std::cout << "\n";

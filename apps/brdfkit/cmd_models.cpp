@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/models/model.h"
 #include "command.h"
 
@@ -47,7 +48,7 @@ const CommandRegistration reg("models", [](CLI::App& app) {
   return [json, names]() {
     const std::vector<const Model*> models = selected(*names);
     if (*json) {
-      std::cout << models_json(models).dump(2) << "\n";
+      std::cout << json_text(models_json(models)) << "\n";
       return 0;
     }
     for (const Model* m : models) {

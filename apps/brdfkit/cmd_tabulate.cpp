@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"
 #include "brdf_options.h"
@@ -68,7 +69,7 @@ int run_tabulate(const TabulateArgs& a) {
                           {"cells_clamped", negative.load()},
                           {"max_rho", {peak[0], peak[1], peak[2]}}};
     if (!a.brdf.material.empty()) out["material"] = a.brdf.material;
-    std::cout << out.dump(2) << "\n";
+    std::cout << json_text(out) << "\n";
     return 0;
   }
   std::cout << fmt::format("wrote {}: {}{}\n", a.output, brdf.model().name(),

@@ -25,9 +25,13 @@ inline void add_fit_settings(CLI::App& sub, fit::FitSettings& s) {
                      std::to_string(fit::FitSettings::kMaxStarts) + ")")
       ->capture_default_str();
   sub.add_option("--seed", s.seed, "Seed of the random starts")->capture_default_str();
-  sub.add_option("--max-iterations", s.max_iterations, "Solver iterations per start and level")->capture_default_str();
+  sub.add_option("--max-iterations", s.max_iterations,
+                 "Solver iterations per start and level (1 to " + std::to_string(fit::FitSettings::kMaxIterations) +
+                     ")")
+      ->capture_default_str();
   sub.add_option("--coarsen", s.coarsen,
-                 "Widen every metric grid step by this factor (1 = the papers' grids; quick looks only)")
+                 "Widen every metric grid step by this factor (1 = the papers' grids; quick looks only; 1 to " +
+                     std::to_string(fit::FitSettings::kMaxCoarsen) + ")")
       ->capture_default_str();
   sub.add_option("--threshold", s.threshold,
                  "hp-2step: a cell is diffraction-dominated where |det(grad log rho, grad f)| < this (seed 004 §4.2)")

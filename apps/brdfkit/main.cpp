@@ -4,7 +4,10 @@
 #include <iostream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/text.h"
 #include "command.h"
 
 namespace brdfkit::cli {
@@ -24,6 +27,28 @@ std::string flag_of(std::string setting) {
   return "--" + setting;
 }
 
+// Every error ends as this one line on stderr. The message goes through printable(): names from
+// files and arguments may hold NUL or control bytes, which must neither cut the line short nor
+// reach the terminal raw.
+int print_error(const std::string& prefix, const std::string& message, int exit_code) {
+  std::cerr << prefix << ": " << brdfkit::printable(message) << "\n";
+  return exit_code;
+}
+
+// A parser error (unknown option, missing value, not a number) in one line naming the subcommand;
+// the full help is one --help away and would bury the message.
+int print_usage_error(const std::vector<CLI::App*>& subs, const CLI::ParseError& e, int argc, char** argv) {
+  std::string prefix = "brdfkit", message = e.what();
+  for (const CLI::App* sub : subs)
+    if (sub->parsed()) prefix += " " + sub->get_name();
+  if (prefix == "brdfkit" && argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : subs) names.push_back(sub->get_name());
+    message = "'" + std::string(argv[1]) + "' is not a subcommand (" + CLI::detail::join(names, ", ") + ")";
+  }
+  return print_error(prefix, message + "; see " + prefix + " --help", 2);
+}
+
 }  // namespace brdfkit::cli
 
 int main(int argc, char** argv) {
@@ -31,7 +56,6 @@ int main(int argc, char** argv) {
   CLI::App app{"brdfkit: fit, check, sample and compare analytic BRDF models on measured reflectance"};
   app.set_version_flag("--version", std::string("brdfkit ") + BRDFKIT_VERSION);
   app.require_subcommand(1);
-  app.failure_message(CLI::FailureMessage::help);
   auto& commands = registered_commands();
   std::sort(commands.begin(), commands.end(), [](auto& a, auto& b) { return a.name < b.name; });
   std::vector<std::pair<CLI::App*, std::function<int()>>> runs;
@@ -49,21 +73,24 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);  // prints the message and usage on stderr
-    return 2;
+    std::vector<CLI::App*> subs;
+    for (auto& [sub, run] : runs) subs.push_back(sub);
+    return print_usage_error(subs, e, argc, argv);
   }
   try {
     for (auto& [sub, run] : runs)
       if (sub->parsed()) return run();
   } catch (const brdfkit::SettingError& e) {
-    std::cerr << "brdfkit: " << flag_of(e.setting()) << ": " << e.detail() << "\n";
-    return 2;
+    return print_error("brdfkit", flag_of(e.setting()) + ": " + e.detail(), 2);
   } catch (const brdfkit::InputError& e) {
-    std::cerr << "brdfkit: " << e.what() << "\n";
-    return 2;
+    return print_error("brdfkit", e.what(), 2);
+  } catch (const nlohmann::json::type_error& e) {
+    // 316: a name that is not UTF-8 reached JSON output that does not go through json_text().
+    if (e.id == 316)
+      return print_error("brdfkit", std::string("a name is not valid UTF-8, which JSON output cannot hold: ") + e.what(), 2);
+    return print_error("brdfkit", std::string("internal error: ") + e.what(), 1);
   } catch (const std::exception& e) {
-    std::cerr << "brdfkit: internal error: " << e.what() << "\n";
-    return 1;
+    return print_error("brdfkit", std::string("internal error: ") + e.what(), 1);
   }
   return 2;
 }

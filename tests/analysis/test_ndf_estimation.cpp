@@ -17,7 +17,7 @@ namespace brdfkit {
 namespace {
 
 // kd = (0.1, 0.08, 0.05), ks = (1, 0.9, 0.7), GGX α = 0.2, Schlick F0 = 0.05: the material the
-// acceptance test tabulates (issue 6).
+// acceptance test tabulates.
 const double kParams[3][4] = {{0.1, 1.0, 0.2, 0.05}, {0.08, 0.9, 0.2, 0.05}, {0.05, 0.7, 0.2, 0.05}};
 
 const MerlBrdf& synthetic_ggx() {
@@ -49,7 +49,7 @@ TEST(ProjectedAreaMasking, MatchesClosedFormSmithForGgxAndBeckmann) {
 // Relative error of G1 up to the last MERL cell (θ = 89.75°) and beyond: the estimation fits cells
 // near the horizon at full weight, where G1 → 0 and an absolute error bound says little. Tabulating
 // G1 instead of the projected area was 3.5 % low at 89.9° (GGX α = 0.2), and that moved the
-// estimated D by 1 % (issue 6).
+// estimated D by 1 %.
 TEST(ProjectedAreaMasking, RelativeErrorStaysSmallAtTheHorizon) {
   const double alpha = 0.2;
   const Ggx<double> ggx(&alpha);

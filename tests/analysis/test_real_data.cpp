@@ -1,6 +1,6 @@
 // Analyses on the shared real measurements (skipped when ../shared/data is absent): back-scattering
 // fits on the MERL pink-felt slice and the glossy RGL films (seed 000 Fig. 3's claim), the
-// tabulated-NDF model against single-lobe Cook-Torrance/Beckmann under `ngan` (issue 6), and the
+// tabulated-NDF model against single-lobe Cook-Torrance/Beckmann under `ngan`, and the
 // diffraction map and Fresnel extraction on one RGL material.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// `brdfkit tabulate` and `brdfkit eval` (issue #4.6, #5.5): what they write and print equals the
+// `brdfkit tabulate` and `brdfkit eval`: what they write and print equals the
 // library's evaluation of the same model and parameters, for --param values, sums of lobes,
 // saved fits and published fits; the published-fit round trip through `brdfkit info`; bad input
 // is a one-line message with exit code 2 and no file written.

@@ -3,11 +3,14 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <map>
 #include <optional>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/measured/cornell.h"
+#include "brdfkit/measured/load.h"
 #include "support/real_data.h"
 
 using namespace brdfkit;
@@ -206,4 +209,77 @@ TEST(CornellReal, BadInputIsAClearInputError) {
   EXPECT_NE(e3.find("wavelength count"), std::string::npos) << e3;
   EXPECT_NE(load_error(write("empty.brdf", {"# only comments"})).find("no wavelength count"), std::string::npos);
   EXPECT_THROW(CornellBrdf(cornell_file("garnet_red"), dir / "no-cie-here"), InputError);
+}
+
+// A file copied away from ../shared/data (no cie/ folder near it, no $BRDFKIT_CIE_DIR) reads with
+// the compiled-in CIE tables: the same RGB, bit for bit, as the file in place read with the shared
+// data's own tables (the same numbers).
+TEST(CornellReal, CopyOutsideTheDataFolderGivesTheSameRgb) {
+  BRDFKIT_REQUIRE_DATA("cornell");
+  BRDFKIT_REQUIRE_DATA("cie");
+  const ScopedEnv no_override("BRDFKIT_CIE_DIR", nullptr);
+  const auto copy = scratch_dir("cornell_copy") / "garnet_red.brdf";
+  std::filesystem::copy_file(cornell_file("garnet_red"), copy);
+  const SampleSet moved = load_measured(copy)->samples();
+  const SampleSet in_place = CornellBrdf(cornell_file("garnet_red"), data_dir() / "cie").samples();
+  ASSERT_EQ(moved.size(), in_place.size());
+  for (size_t k = 0; k < moved.size(); ++k)
+    for (size_t c = 0; c < 3; ++c) ASSERT_EQ(moved.rgb[c][k], in_place.rgb[c][k]) << "sample " << k << " channel " << c;
+  std::filesystem::remove_all(copy.parent_path());
+}
+
+namespace {
+
+// garnet_red's lines with sample `sample` (0-based among sample lines) given `values` from its
+// first spectral value on; returns the new file and the 1-based line number of that sample.
+std::pair<std::filesystem::path, size_t> garnet_with(const std::filesystem::path& file, size_t sample,
+                                                     const std::vector<std::string>& values) {
+  std::ifstream in(cornell_file("garnet_red"), std::ios::binary);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  size_t line = 0;
+  for (size_t i = 0, seen = 0; i < lines.size(); ++i)
+    if (lines[i].size() > 100 && lines[i][0] != '#' && seen++ == sample) line = i;
+  std::istringstream ss(lines[line]);
+  std::vector<std::string> tokens{std::istream_iterator<std::string>(ss), {}};
+  std::copy(values.begin(), values.end(), tokens.begin() + 4);
+  std::string joined;
+  for (const auto& t : tokens) joined += (joined.empty() ? "" : " ") + t;
+  lines[line] = joined + "\r";
+  std::ofstream out(file, std::ios::binary);
+  for (const auto& l : lines) out << l << "\n";
+  return {file, line + 1};
+}
+
+}  // namespace
+
+// Cornell files are refused, not patched, when a value cannot be a measurement (cornell.cpp says
+// why): a non-finite token, or a value beyond kMaxMeasuredValue, whose sums overflow.
+TEST(CornellReal, NonFiniteOrHugeValuesAreRefused) {
+  BRDFKIT_REQUIRE_DATA("cornell");
+  const auto dir = scratch_dir("cornell_huge");
+  const std::vector<std::string> huge(31, "1.7976931348623157e308");
+  struct Case {
+    std::string name;
+    std::vector<std::string> values;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+      {"huge.brdf", huge, "spectral value 0 (400 nm) is 1.7976931348623157e+308"},
+      {"negative_huge.brdf", {"0.01", "0.01", "-1e300"}, "spectral value 2 (420 nm) is -1e+300"},
+      {"nan.brdf", {"nan"}, "not a number: 'nan'"},
+      {"inf.brdf", {"0.01", "inf"}, "not a number: 'inf'"},
+  };
+  for (const auto& c : cases) {
+    const auto [file, line] = garnet_with(dir / c.name, 5, c.values);
+    std::string what;
+    try {
+      CornellBrdf b(file);
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    EXPECT_NE(what.find(file.string() + ":" + std::to_string(line) + ": "), std::string::npos) << what;
+    EXPECT_NE(what.find(c.expect), std::string::npos) << what;
+  }
+  std::filesystem::remove_all(dir);
 }

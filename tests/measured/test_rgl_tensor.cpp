@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -218,11 +219,11 @@ TEST(RglReal, JacobianZeroTableHoldsRhoTimesCosine) {
 }
 
 // A spectral file (`spectra` + `wavelengths`) is converted node by node to linear sRGB
-// (spectral_rgb.h). Built from satin_rosaline with a constant spectrum equal to the node's
-// luminance: every channel must then equal the luminance table (white maps to (1,1,1) ± 2e-4).
+// (spectral_rgb.h, with the compiled-in CIE tables). Built from satin_rosaline with a constant
+// spectrum equal to the node's luminance: every channel must then equal the luminance table
+// (white maps to (1,1,1) ± 2e-4).
 TEST(RglReal, SpectralFileConvertsToRgb) {
   BRDFKIT_REQUIRE_DATA("rgl");
-  BRDFKIT_REQUIRE_DATA("cie");
   auto fields = parse_tensor(read_bytes(rgl_file("satin_rosaline")));
   std::vector<float> lum;
   for (const auto& f : fields)
@@ -245,7 +246,7 @@ TEST(RglReal, SpectralFileConvertsToRgb) {
   const auto file = dir / "rgl" / "satin_spectral.bsdf";
   std::filesystem::create_directories(file.parent_path());
   write_bytes(file, write_tensor(fields));
-  ::setenv("BRDFKIT_CIE_DIR", (data_dir() / "cie").c_str(), 1);
+  const ScopedEnv built_in_tables("BRDFKIT_CIE_DIR", nullptr);
   const RglBrdf b(file);
   EXPECT_TRUE(b.spectral());
   for (const auto& [wi, wo] : test_pairs(200)) {
@@ -307,4 +308,102 @@ TEST(RglReal, BadInputIsAClearInputError) {
 
   EXPECT_NE(load_error(dir / "absent.bsdf").find("cannot open"), std::string::npos);
   EXPECT_THROW(read_rgl(dir / "magic.bsdf"), InputError);
+}
+
+namespace {
+
+struct BadEntry {
+  const char* field;
+  size_t index;
+  float value;
+  const char* expect;  // in the message, after the file name
+};
+
+std::string fmt_name(const BadEntry& c) { return std::string(c.field) + "_" + std::to_string(c.index) + "_" + std::to_string(c.value) + ".bsdf"; }
+
+// One bad entry per case in copies of colodur_napoli_4f; each must be refused by its own rule.
+void expect_each_refused(const std::string& scratch, const std::vector<BadEntry>& cases) {
+  const auto dir = scratch_dir(scratch);
+  for (const auto& c : cases) {
+    const auto file = rgl_variant("colodur_napoli_4f", dir / fmt_name(c), [&](auto& f) { set_float(f, c.field, c.index, c.value); });
+    const std::string e = load_error(file);
+    EXPECT_NE(e.find(file.string() + ": field '" + c.field + "' "), std::string::npos) << e;
+    EXPECT_NE(e.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in: " << e;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+
+// Every table is checked where the format defines its domain (rgl_tensor.cpp): angles within
+// theirs and increasing, every table finite, σ > 0, D and the VNDF ≥ 0.
+TEST(RglReal, EveryTableIsValidated) {
+  BRDFKIT_REQUIRE_DATA("rgl");
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  expect_each_refused("rgl_tables", {
+      {"theta_i", 0, -0.1f, "entry 0 [0] is -0.1: must lie in [0, π/2]"},
+      {"theta_i", 7, 1.6f, "entry 7 [7] is 1.6: must lie in [0, π/2]"},
+      {"theta_i", 3, nan, "entry 3 [3] is NaN: must be finite"},
+      {"theta_i", 3, 0.5f, "entry 3 [3] is 0.5: must be greater than entry 2"},
+      {"phi_i", 0, 4.0f, "entry 0 [0] is 4: must lie in [-π, π]"},
+      {"sigma", 130, 0.0f, "entry 130 [1,2] is 0: must be > 0"},
+      {"sigma", 7, -inf, "entry 7 [0,7] is -Inf: must be finite"},
+      {"ndf", 9, nan, "entry 9 [0,9] is NaN: must be finite"},
+      {"ndf", 9, -1.0f, "entry 9 [0,9] is -1: must be ≥ 0"},
+      {"vndf", 100, inf, "entry 100 [0,0,0,100] is +Inf: must be finite"},
+      {"vndf", 100, -0.5f, "entry 100 [0,0,0,100] is -0.5: must be ≥ 0"},
+      {"luminance", 3, nan, "entry 3 [0,0,0,3] is NaN: must be finite"},
+      {"rgb", 3071, -inf, "entry 3071 [0,0,2,31,31] is -Inf: must be finite"},
+      {"rgb", 6000, nan, "entry 6000 [0,1,2,27,16] is NaN: must be finite"},
+  });
+}
+
+// Tables that may hold zeros must not be zero throughout: D(h) would make every value 0, and a
+// θi slice of the VNDF with no density is no warp.
+TEST(RglReal, AllZeroTablesAreRefused) {
+  BRDFKIT_REQUIRE_DATA("rgl");
+  const auto dir = scratch_dir("rgl_zero");
+  const std::map<std::string, std::string> expect = {
+      {"sigma", "field 'sigma' entry 0 [0,0] is 0: must be > 0"},
+      {"ndf", "field 'ndf' entries 0 [0,0] to 255 [1,127] are all 0"},
+      {"vndf", "field 'vndf' entries 0 [0,0,0,0] to 16383 [0,0,127,127] are all 0"},
+  };
+  for (const auto& [field, text] : expect) {
+    const auto file = rgl_variant("colodur_napoli_4f", dir / (field + ".bsdf"), [&](auto& f) { fill_float(f, field, 0.0f); });
+    const std::string e = load_error(file);
+    EXPECT_NE(e.find(file.string() + ": " + text), std::string::npos) << e;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// The spectral variant's own tables: finite spectra, wavelengths finite, positive and increasing.
+TEST(RglReal, SpectralTablesAreValidated) {
+  BRDFKIT_REQUIRE_DATA("rgl");
+  const std::vector<float> wl = {400, 500, 600, 700};
+  auto spectral = [&](std::vector<TensorField>& fields) {
+    std::erase_if(fields, [](const TensorField& f) { return f.name == "rgb"; });
+    fields.push_back({"wavelengths", 10, {wl.size()}, std::vector<std::uint8_t>(wl.size() * 4)});
+    std::memcpy(fields.back().data.data(), wl.data(), wl.size() * 4);
+    fields.push_back({"spectra", 10, {1, 8, wl.size(), 32, 32}, std::vector<std::uint8_t>(8 * wl.size() * 32 * 32 * 4)});
+    fill_float(fields, "spectra", 0.1f);
+  };
+  const auto dir = scratch_dir("rgl_spectral_bad");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<BadEntry> cases = {
+      {"spectra", 5, nan, "entry 5 [0,0,0,0,5] is NaN: must be finite"},
+      {"wavelengths", 1, nan, "entry 1 [1] is NaN: must be finite"},
+      {"wavelengths", 0, -400.0f, "entry 0 [0] is -400: must be > 0"},
+      {"wavelengths", 2, 450.0f, "entry 2 [2] is 450: must be greater than entry 1"},
+  };
+  const auto good = rgl_variant("colodur_napoli_4f", dir / "good.bsdf", spectral);
+  EXPECT_EQ(load_error(good), "");
+  for (const auto& c : cases) {
+    const auto file = rgl_variant("colodur_napoli_4f", dir / fmt_name(c), [&](auto& f) {
+      spectral(f);
+      set_float(f, c.field, c.index, c.value);
+    });
+    const std::string e = load_error(file);
+    EXPECT_NE(e.find(file.string() + ": field '" + c.field + "' " + c.expect), std::string::npos) << e;
+  }
+  std::filesystem::remove_all(dir);
 }

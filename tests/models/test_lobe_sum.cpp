@@ -1,4 +1,4 @@
-// Multi-lobe sums (models/lobe_sum.h, issue #4.4): the sum equals the sum of its components
+// Multi-lobe sums (models/lobe_sum.h): the sum equals the sum of its components
 // evaluated separately, it has one diffuse term, it is reciprocal, and its mixture sampling
 // passes the χ² test (and fails it with the pdf doubled).
 #include <gtest/gtest.h>

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
 #include "brdfkit/measured/albedo.h"
 #include "brdfkit/render/camera.h"
@@ -103,7 +104,9 @@ TEST(Furnace, EveryCatalogueModelRendersItsAlbedo) {
     const auto t1 = std::chrono::steady_clock::now();
     const bool aniso = is_anisotropic(*m, v);
     const Brdf brdf(*m, v);
-    const std::optional<AlbedoTable> table = aniso ? std::nullopt : std::optional<AlbedoTable>(AlbedoTable(brdf));
+    // An isotropic model's albedo depends on θ only: tabulated once. (A pointer, not an optional:
+    // GCC 12 warns of an optional holding vectors as maybe uninitialized.)
+    const std::unique_ptr<const AlbedoTable> table = aniso ? nullptr : std::make_unique<const AlbedoTable>(brdf);
     double worst = 0, worst_sigmas = 0;
     int checked = 0;
     for (int y = 0; y < kSize; ++y)

@@ -31,7 +31,7 @@ TEST(BagherG1, Theta0MakesGrazingZero) {
 }
 
 TEST(BagherG1, FitsSgdOverTheParameterRange) {
-  // Seed 000's materials: α 1e-4 … 0.4, p 0 … 1.7 (issue #3).
+  // Seed 000's materials: α 1e-4 … 0.4, p 0 … 1.7.
   const auto theta = bagher_g1_angles(90);
   double worst_ss = 0, worst_rms = 0;
   for (double alpha : {1e-4, 1e-3, 0.01, 0.03, 0.05, 0.1, 0.2, 0.4})

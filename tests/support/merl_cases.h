@@ -1,5 +1,5 @@
 #pragma once
-// MERL-format materials tabulated from known parameters for the recovery tests (issue #5): the
+// MERL-format materials tabulated from known parameters for the recovery tests: the
 // cells a metric with `coarsen` k reads (the middle cell of each k × k × k index block, see
 // fit/metric_cells.h) are filled at their centres, every other cell is "not measured". A full
 // table (k = 1) costs one model evaluation per cell; k = 3 costs 1/27 of it and the fit reads

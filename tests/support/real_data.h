@@ -105,4 +105,31 @@ inline std::vector<std::uint8_t> write_tensor(const std::vector<TensorField>& fi
   return b;
 }
 
+// Sets entry `index` (flat, row-major) of the float32 field `name`: one bad value in a real file.
+inline void set_float(std::vector<TensorField>& fields, const std::string& name, size_t index, float value) {
+  for (auto& f : fields)
+    if (f.name == name) {
+      ASSERT_LE(4 * (index + 1), f.data.size()) << name << " has no entry " << index;
+      std::memcpy(f.data.data() + 4 * index, &value, sizeof value);
+      return;
+    }
+  ADD_FAILURE() << "no field '" << name << "'";
+}
+
+// Sets every entry of the float32 field `name` to `value`.
+inline void fill_float(std::vector<TensorField>& fields, const std::string& name, float value) {
+  for (auto& f : fields)
+    if (f.name == name)
+      for (size_t i = 0; i + 4 <= f.data.size(); i += 4) std::memcpy(f.data.data() + i, &value, sizeof value);
+}
+
+// A copy of the real RGL file `material` with `change` applied to its fields, saved as `file`.
+template <class Change>
+std::filesystem::path rgl_variant(const std::string& material, const std::filesystem::path& file, Change change) {
+  auto fields = parse_tensor(read_bytes(rgl_file(material)));
+  change(fields);
+  write_bytes(file, write_tensor(fields));
+  return file;
+}
+
 }  // namespace brdfkit::test

@@ -17,7 +17,7 @@ namespace brdfkit::analysis {
 // on 0.5° steps was 3.5 % low at 89.9° (α = 0.2), while A is bounded and smooth up to π/2
 // (A(π/2) = the mean projected slope area) and its interpolation error stays relative ≈ 4e-4.
 // The tabulated-NDF estimation fits cells with θo up to 89.75° at full weight (ngan weighs by cosθi
-// only, and ρ stays finite there since G1/cosθo does), so that 3.5 % moved D by 1 % (issue 6).
+// only, and ρ stays finite there since G1/cosθo does), so that 3.5 % moved D by 1 %.
 class ProjectedAreaMasking {
  public:
   ProjectedAreaMasking() = default;

@@ -8,8 +8,18 @@
 
 namespace brdfkit {
 
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
-  namespace fs = std::filesystem;
+namespace fs = std::filesystem;
+
+void check_output_file(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(path.string(), "is a folder; give the path of a file to write");
+  const fs::path folder = path.parent_path();
+  if (!folder.empty() && !fs::is_directory(folder, ec))
+    throw InputError(path.string(), "cannot be written: there is no folder " + folder.string());
+}
+
+void write_file_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  check_output_file(path);
   const fs::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
   try {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
@@ -18,7 +28,9 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
     out.flush();
     if (!out) throw InputError(path.string(), "write failed");
     out.close();
-    fs::rename(tmp, path);
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw InputError(path.string(), "cannot be replaced: " + ec.message());
   } catch (...) {
     std::error_code ec;
     fs::remove(tmp, ec);

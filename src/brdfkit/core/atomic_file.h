@@ -8,7 +8,13 @@
 
 namespace brdfkit {
 
+// Both check the path first (check_output_file).
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents);
+
+// InputError naming `path` when no file can be written there: it is a folder, or the folder it
+// would go in does not exist. A command checks its output this way before long work, so a typo
+// in -o does not cost the work.
+void check_output_file(const std::filesystem::path& path);
 
 }  // namespace brdfkit

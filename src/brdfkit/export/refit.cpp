@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <fmt/format.h>
+
 #include "brdfkit/fit/fit_job.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/measured/merl_brdf.h"
@@ -12,7 +14,7 @@ namespace brdfkit::exporter {
 RefitResult refit(const Brdf& source, const Model& target, const std::string& metric, int starts) {
   const auto t0 = std::chrono::steady_clock::now();
   const MerlBrdf table(merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return source.eval(wi, wo); }),
-                       "(" + std::string(source.model().name()) + " tabulated on the MERL grid)");
+                       fmt::format("({} tabulated on the MERL grid)", source.model().name()));
   fit::FitSettings settings;
   settings.metric = metric.empty() ? "ngan" : metric;
   settings.starts = starts;

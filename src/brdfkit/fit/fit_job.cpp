@@ -3,12 +3,14 @@
 #include <cmath>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/metric/metric_report.h"
 
 namespace brdfkit::fit {
 
 FitJobResult run_fit_job(const Model& model, MetricStore& store, const std::string& file, const std::string& sha256,
                          const FitSettings& settings, const Progress& progress) {
+  require_json_text(file);  // the saved fit names its data file: refuse a name JSON cannot hold before fitting
   ProcedureResult pr = run_procedure(model, store, settings, progress);
   FitJobResult r;
   r.fit = pr.fit;

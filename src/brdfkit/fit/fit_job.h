@@ -26,8 +26,8 @@ struct FitJobResult {
 };
 
 // Fits `model` to the store's data (read from `file`, whose SHA-256 is `sha256`). Throws
-// SettingError (bad settings), InputError (data the metric cannot answer, incompatible model) or
-// FitError (no finite start).
+// SettingError (bad settings), InputError (a file name that is not UTF-8, data the metric cannot
+// answer, incompatible model) or FitError (no finite start).
 FitJobResult run_fit_job(const Model& model, MetricStore& store, const std::string& file, const std::string& sha256,
                          const FitSettings& settings, const Progress& progress = {});
 

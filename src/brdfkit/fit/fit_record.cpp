@@ -8,6 +8,7 @@
 
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 
 namespace brdfkit::fit {
 
@@ -152,7 +153,7 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
 }
 
 void save_fit_record(const std::filesystem::path& file, const FitRecord& r) {
-  write_file_atomically(file, to_json(r).dump(2) + "\n");
+  write_file_atomically(file, json_text(to_json(r)) + "\n");
 }
 
 FitRecord load_fit_record(const std::filesystem::path& file) {

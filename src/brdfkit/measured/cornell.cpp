@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/measured/spectral_rgb.h"
 #include "brdfkit/measured/text_numbers.h"
+#include "brdfkit/measured/value_limit.h"
 
 namespace brdfkit {
 
@@ -18,6 +20,17 @@ namespace {
 
 // Ring index k of 1 − cos θs = (k/10)² (DESIGN.md §2), nearest ring.
 int ring_of(double theta_s) { return int(std::lround(10 * std::sqrt(std::max(0.0, 1 - std::cos(theta_s))))); }
+
+// A Cornell file is refused, not patched, when a spectral value cannot be a measurement (beyond
+// ±kMaxMeasuredValue; non-finite tokens are refused by parse_numbers): the format has no "not
+// measured" mark (a direction not measured is a line not written), so such a value is corruption,
+// and dropping its sample would hide it while shifting the solid-angle weights of its ring.
+void check_spectral_values(std::span<const double> values, const std::vector<double>& wavelengths, const std::string& where) {
+  for (size_t j = 0; j < values.size(); ++j)
+    if (std::abs(values[j]) > kMaxMeasuredValue)
+      throw InputError(where, fmt::format("spectral value {} ({} nm) is {}: beyond ±{} sr⁻¹, not a measurement", j,
+                                          wavelengths[j], values[j], kMaxMeasuredValue));
+}
 
 }  // namespace
 
@@ -52,6 +65,7 @@ CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesyste
                                           4 + n_wl, n_wl));
     if (v[0] < 0 || v[0] >= kPi / 2 || v[2] < 0 || v[2] >= kPi / 2)
       throw InputError(where, fmt::format("angles out of range: θi = {}, θs = {} (radians, in [0, π/2))", v[0], v[2]));
+    check_spectral_values(std::span(v).subspan(4), wavelengths_, where);
     angles.push_back({v[0], v[1], v[2], v[3]});
     spectra_.emplace_back(v.begin() + 4, v.end());
   }
@@ -63,7 +77,7 @@ CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesyste
 
   std::unique_ptr<SpectrumToRgb> own;
   if (!cie_dir.empty()) own = std::make_unique<SpectrumToRgb>(cie_dir);
-  const SpectrumToRgb& conv = own ? *own : spectrum_to_rgb_for(file);
+  const SpectrumToRgb& conv = own ? *own : default_spectrum_to_rgb();
   const Eigen::MatrixXd m = conv.matrix(wavelengths_);
 
   // Solid-angle weights (see the header): samples per (θi, ring), then band area / count.

@@ -16,7 +16,8 @@ namespace brdfkit {
 
 class CornellBrdf final : public MeasuredBrdf {
  public:
-  // `cie_dir`: folder of the CIE tables (data/cie); empty = default_cie_dir(file) (spectral_rgb.h).
+  // `cie_dir`: folder of the CIE tables; empty = default_spectrum_to_rgb() (spectral_rgb.h: the
+  // compiled-in tables unless $BRDFKIT_CIE_DIR names a folder).
   explicit CornellBrdf(const std::filesystem::path& file, const std::filesystem::path& cie_dir = {});
 
   std::string format() const override { return "cornell"; }

@@ -14,6 +14,7 @@
 
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/measured/value_limit.h"
 
 namespace brdfkit::merl {
 
@@ -187,6 +188,35 @@ size_t read_fully(int fd, void* dst, size_t n) {
 
 const char* const kChannelName[3] = {"R", "G", "B"};
 
+// MERL files are refused, not patched, for a value that cannot be a measurement: non-finite, or
+// above kMaxMeasuredValue once scaled, where means and albedos overflow. The format has its own
+// "not measured" mark (a negative value); anything else is corruption, and dropping those cells
+// would pass a damaged file off as a sparse measurement.
+bool is_measurement(double raw, double limit) { return std::isfinite(raw) & (raw <= limit); }
+
+// Index of the first value (channel blocks R, G, B) that is no measurement; 3·kCellCount if none.
+size_t first_corrupt_value(const double* v) {
+  for (size_t c = 0; c < 3; ++c) {
+    const double limit = kMaxMeasuredValue / kScale[c];
+    const double* block = v + c * kCellCount;
+    bool all = true;  // a good file costs one branch-free pass; the search runs only on failure
+    for (size_t k = 0; k < kCellCount; ++k) all &= is_measurement(block[k], limit);
+    if (all) continue;
+    const double* bad = std::find_if_not(block, block + kCellCount, [&](double x) { return is_measurement(x, limit); });
+    return c * kCellCount + size_t(bad - block);
+  }
+  return 3 * kCellCount;
+}
+
+[[noreturn]] void refuse_value(const std::string& where, double x, size_t k) {
+  const Cell c = cell_at(k % kCellCount);
+  const std::string what = std::isnan(x)   ? "NaN"
+                           : std::isinf(x) ? (x > 0 ? "+Inf" : "-Inf")
+                                           : fmt::format("{}, above {} sr⁻¹ once scaled: not a measurement", x, kMaxMeasuredValue);
+  throw InputError(where, fmt::format("value {} ({} channel, cell θh {} θd {} φd {}) is {}", k, kChannelName[k / kCellCount], c.theta_h,
+                                      c.theta_d, c.phi_d, what));
+}
+
 }  // namespace
 
 Table read(const std::filesystem::path& file) {
@@ -224,17 +254,7 @@ Table read(const std::filesystem::path& file) {
   if (got != want)
     throw InputError(where, fmt::format("truncated: read {} of {} value bytes", got, want));
 
-  // Non-finite values are corruption, not "not measured": refuse the file, naming the first one.
-  const double* v = raw.get();
-  bool all_finite = true;
-  for (size_t k = 0; k < 3 * kCellCount; ++k) all_finite &= std::isfinite(v[k]);
-  if (!all_finite) {
-    const size_t k = size_t(std::find_if(v, v + 3 * kCellCount, [](double x) { return !std::isfinite(x); }) - v);
-    const Cell c = cell_at(k % kCellCount);
-    throw InputError(where, fmt::format("value {} ({} channel, cell θh {} θd {} φd {}) is {}", k,
-                                        kChannelName[k / kCellCount], c.theta_h, c.theta_d, c.phi_d,
-                                        std::isnan(v[k]) ? "NaN" : (v[k] > 0 ? "+Inf" : "-Inf")));
-  }
+  if (const size_t k = first_corrupt_value(raw.get()); k != 3 * kCellCount) refuse_value(where, raw[k], k);
   Table table(std::move(raw));
   if (table.valid_count() == 0)
     throw InputError(where, "no measured cell: every cell has a negative (not measured) value");

@@ -101,7 +101,8 @@ class Table {
 
 // Reads a MERL .binary file in one read, validating header, size and values; throws InputError
 // naming the file and the problem (missing, unreadable, a directory, truncated, trailing bytes,
-// wrong dimensions, NaN or ±Inf, no measured cell). Requires a little-endian host, as the files are.
+// wrong dimensions, NaN or ±Inf, a value above kMaxMeasuredValue once scaled, no measured cell).
+// Requires a little-endian host, as the files are.
 Table read(const std::filesystem::path& file);
 // Writes the table atomically (core/atomic_file.h): bytes round-trip exactly through read().
 void write(const std::filesystem::path& file, const Table& table);

@@ -1,5 +1,6 @@
 #include "brdfkit/measured/rgl_tensor.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -7,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <span>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -81,6 +83,111 @@ std::string shape_string(const std::vector<std::uint64_t>& s) {
   return fmt::format("[{}]", fmt::join(s, ","));
 }
 
+// "[i0,i1,…]": the position of flat entry `flat` in a row-major table of `shape`.
+std::string index_string(const std::vector<std::uint64_t>& shape, size_t flat) {
+  std::vector<std::uint64_t> index(shape.size());
+  for (size_t d = shape.size(); d-- > 0;) {
+    index[d] = flat % shape[d];
+    flat /= shape[d];
+  }
+  return shape_string(index);
+}
+
+// A table entry as a message shows it: NaN, +Inf, -Inf or its shortest decimal form.
+std::string describe(float x) {
+  if (std::isnan(x)) return "NaN";
+  if (std::isinf(x)) return x > 0 ? "+Inf" : "-Inf";
+  return fmt::format("{}", x);
+}
+
+// One float32 table of the file and the rules it must follow; a broken rule is an InputError
+// naming the file, the field and the first bad entry (flat and per-dimension index).
+struct TableView {
+  const std::string& path;
+  std::string name;
+  const Field& field;
+  std::span<const float> values;
+
+  [[noreturn]] void refuse(size_t k, std::string_view rule) const {
+    throw InputError(path, fmt::format("field '{}' entry {} {} is {}: {}", name, k, index_string(field.shape, k),
+                                       describe(values[k]), rule));
+  }
+  template <class Ok> void require_each(Ok ok, std::string_view rule) const {
+    for (size_t k = 0; k < values.size(); ++k)
+      if (!ok(values[k])) refuse(k, rule);
+  }
+  void require_finite() const { require_each([](float x) { return std::isfinite(x); }, "must be finite"); }
+  void require_non_negative() const { require_each([](float x) { return x >= 0; }, "must be ≥ 0 (a density)"); }
+  void require_increasing() const {
+    for (size_t k = 1; k < values.size(); ++k)
+      if (!(values[k] > values[k - 1]))
+        refuse(k, fmt::format("must be greater than entry {} ({})", k - 1, describe(values[k - 1])));
+  }
+  // Entries [begin, end) must not all be 0; `why` says what a zero block would break.
+  void require_not_all_zero(size_t begin, size_t end, std::string_view why) const {
+    if (std::any_of(values.begin() + std::ptrdiff_t(begin), values.begin() + std::ptrdiff_t(end), [](float x) { return x != 0; }))
+      return;
+    throw InputError(path, fmt::format("field '{}' entries {} {} to {} {} are all 0: {}", name, begin, index_string(field.shape, begin),
+                                       end - 1, index_string(field.shape, end - 1), why));
+  }
+};
+
+// Applies `rules` to the float32 field `name` after checking that every entry is finite. A field
+// that is absent or not float32 is left to the reader's own checks.
+template <class Rules>
+void check_table(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::map<std::string, Field>& fields,
+                 const char* name, Rules rules) {
+  const auto it = fields.find(name);
+  if (it == fields.end() || it->second.type != std::uint8_t(TensorType::Float32)) return;
+  const std::vector<float> v = floats(bytes, it->second);
+  const TableView t{path, name, it->second, v};
+  t.require_finite();
+  rules(t);
+}
+
+// The angle grids and wavelengths: within their domain and increasing. float(π/2) and float(π)
+// round up, so a file's own float π/2 (the horizon node) passes.
+void check_grids(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::map<std::string, Field>& fields) {
+  const float half_pi = float(kPi / 2), pi = float(kPi);
+  check_table(path, bytes, fields, "theta_i", [&](const TableView& t) {
+    t.require_each([&](float x) { return x >= 0 && x <= half_pi; }, "must lie in [0, π/2]");
+    t.require_increasing();
+  });
+  check_table(path, bytes, fields, "phi_i",
+              [&](const TableView& t) { t.require_each([&](float x) { return x >= -pi && x <= pi; }, "must lie in [-π, π]"); });
+  check_table(path, bytes, fields, "wavelengths", [](const TableView& t) {
+    t.require_each([](float x) { return x > 0; }, "must be > 0 (nm)");
+    t.require_increasing();
+  });
+}
+
+// σ divides every value; D and the VNDF are densities, and each θi slice of the VNDF is a warp.
+// The VNDF's shape (4 dimensions, slices of at least 2 × 2) must have been checked.
+void check_microfacet_tables(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::map<std::string, Field>& fields) {
+  check_table(path, bytes, fields, "sigma",
+              [](const TableView& t) { t.require_each([](float x) { return x > 0; }, "must be > 0 (σ(ω) divides every value)"); });
+  check_table(path, bytes, fields, "ndf", [](const TableView& t) {
+    t.require_non_negative();
+    t.require_not_all_zero(0, t.values.size(), "D(h) would make every value 0");
+  });
+  check_table(path, bytes, fields, "vndf", [](const TableView& t) {
+    t.require_non_negative();
+    const size_t slice = size_t(t.field.shape[2] * t.field.shape[3]);
+    for (size_t begin = 0; begin < t.values.size(); begin += slice)
+      t.require_not_all_zero(begin, begin + slice, "a slice of the VNDF with no density is no warp");
+  });
+}
+
+// The tables brdfkit reads, checked where the format defines their domain (DESIGN.md §2, Dupuy &
+// Jakob 2018 §5–6) before any reaches a warp: there a NaN spreads through every CDF, and an angle
+// outside its domain (a negative θi) makes a look-up index outside the tables. Colour tables may
+// hold negative noise (DESIGN.md §2): finite is all they must be.
+void check_tables(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::map<std::string, Field>& fields) {
+  check_grids(path, bytes, fields);
+  check_microfacet_tables(path, bytes, fields);
+  for (const char* name : {"luminance", "rgb", "spectra"}) check_table(path, bytes, fields, name, [](const TableView&) {});
+}
+
 // Mitsuba 3 `measured` / Dupuy & Jakob 2018 §5: θ ↦ u = sqrt(2θ/π) (finer near the normal), φ ↦ (φ+π)/2π.
 double theta2u(double theta) { return std::sqrt(theta * (2 / kPi)); }
 double phi2u(double phi) { return (phi + kPi) * (0.5 / kPi); }
@@ -148,8 +255,6 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
   if (phi_i.size() != 1)
     throw InputError(path_, fmt::format("field 'phi_i' has {} entries: only isotropic files (one phi_i) are supported", phi_i.size()));
   if (nt < 2) throw InputError(path_, "field 'theta_i' needs at least 2 entries");
-  for (size_t k = 1; k < nt; ++k)
-    if (!(theta_i_[k] > theta_i_[k - 1])) throw InputError(path_, "field 'theta_i' must increase");
   if (jac_f.count() != 1) throw InputError(path_, "field 'jacobian' must hold one value");
   jacobian_ = bytes[jac_f.offset] != 0;
 
@@ -161,6 +266,7 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     throw InputError(path_, fmt::format("field 'luminance' has shape {}, expected [1,{},n,n]", shape_string(ls), nt));
   for (const Field* f : {&sigma_f, &ndf_f})
     if (f->shape[0] < 2 || f->shape[1] < 2) throw InputError(path_, fmt::format("fields 'sigma'/'ndf' need at least 2 x 2 entries, found {}", shape_string(f->shape)));
+  check_tables(path_, bytes, fields);
   grid_ = int(ls[2]);
   const size_t cells = size_t(grid_) * size_t(grid_);
 
@@ -188,7 +294,7 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != ls[2] || f.shape[4] != ls[3])
       throw InputError(path_, fmt::format("field 'spectra' has shape {}, expected [1,{},{},{},{}]", shape_string(f.shape), nt, nl, grid_, grid_));
     const std::vector<double> wl(wl_f.begin(), wl_f.end());
-    const Eigen::MatrixXd m = spectrum_to_rgb_for(file).matrix(wl);
+    const Eigen::MatrixXd m = default_spectrum_to_rgb().matrix(wl);
     const std::vector<float> v = floats(bytes, f);
     Eigen::VectorXd s{Eigen::Index(nl)};
     for (size_t t = 0; t < nt; ++t)
@@ -212,9 +318,6 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
   luminance_ = MarginalWarp2D(luminance_raw_.data(), grid_, grid_, params, false);
   for (size_t c = 0; c < 3; ++c) rgb_[c] = MarginalWarp2D(rgb[c].data(), grid_, grid_, params, false);
   rgb_raw_ = std::move(rgb);
-  for (const auto& table : {floats(bytes, ndf_f), floats(bytes, sigma_f), floats(bytes, vndf_f)})
-    for (float x : table)
-      if (!std::isfinite(x)) throw InputError(path_, "non-finite value in the ndf/sigma/vndf tables");
 }
 
 std::string RglBrdf::dimensions() const {

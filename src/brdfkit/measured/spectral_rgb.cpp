@@ -6,10 +6,14 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/measured/cie_tables.h"
 
 namespace brdfkit {
 
@@ -17,44 +21,60 @@ namespace {
 
 constexpr int kFirstNm = 360, kLastNm = 830, kCount = kLastNm - kFirstNm + 1;
 
+constexpr const char* kCmfFile = "cie1931-2deg-xyz-1nm.csv";
+constexpr const char* kD65File = "cie-d65-5nm.csv";
+using Rows = std::vector<std::vector<double>>;
+
+// One row of numbers separated by commas; `where` is the file and line for errors.
+std::vector<double> parse_row(const std::string& line, const std::string& where, size_t columns) {
+  std::vector<double> row;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) {
+    try {
+      row.push_back(std::stod(cell));
+    } catch (const std::exception&) {
+      throw InputError(where, "not a number: '" + cell + "'");
+    }
+  }
+  if (row.size() != columns)
+    throw InputError(where, "expected " + std::to_string(columns) + " values, found " + std::to_string(row.size()));
+  return row;
+}
+
 // Rows of a CIE CSV table (`#` comment lines, one header line, then numbers separated by commas).
-std::vector<std::vector<double>> read_csv(const std::filesystem::path& file, size_t columns) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string(), "cannot open CIE table");
-  std::vector<std::vector<double>> rows;
+Rows read_csv(std::istream& in, const std::string& where, size_t columns) {
+  Rows rows;
   std::string line;
   bool header_seen = false;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
-    if (!header_seen) {
-      header_seen = true;
-      continue;
-    }
-    std::vector<double> row;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) {
-      try {
-        size_t used = 0;
-        row.push_back(std::stod(cell, &used));
-      } catch (const std::exception&) {
-        throw InputError(file.string() + ":" + std::to_string(line_no), "not a number: '" + cell + "'");
-      }
-    }
-    if (row.size() != columns)
-      throw InputError(file.string() + ":" + std::to_string(line_no),
-                       "expected " + std::to_string(columns) + " values, found " + std::to_string(row.size()));
-    rows.push_back(std::move(row));
+    if (!std::exchange(header_seen, true)) continue;
+    rows.push_back(parse_row(line, where + ":" + std::to_string(line_no), columns));
   }
-  if (rows.size() < 2) throw InputError(file.string(), "CIE table has no data rows");
+  if (rows.size() < 2) throw InputError(where, "CIE table has no data rows");
   return rows;
 }
 
+Rows read_csv_file(const std::filesystem::path& file, size_t columns) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string(), "cannot open CIE table");
+  return read_csv(in, file.string(), columns);
+}
+
+// A table compiled into brdfkit (cie_tables.h), by file name.
+Rows read_embedded(std::string_view name, size_t columns) {
+  for (const auto& [file, text] : cie::embedded_tables())
+    if (file == name) {
+      std::istringstream in{std::string(text)};
+      return read_csv(in, "built-in " + std::string(name), columns);
+    }
+  throw std::logic_error("CIE table " + std::string(name) + " was not compiled in (CMakeLists.txt)");
+}
+
 // Linear interpolation in a table sorted by its first column; constant beyond its ends.
-double interpolate(const std::vector<std::vector<double>>& rows, size_t column, double x) {
+double interpolate(const Rows& rows, size_t column, double x) {
   if (x <= rows.front()[0]) return rows.front()[column];
   if (x >= rows.back()[0]) return rows.back()[column];
   size_t lo = 0, hi = rows.size() - 1;
@@ -77,11 +97,15 @@ Eigen::Matrix3d xyz_to_linear_srgb() {
   return m;
 }
 
+SpectrumToRgb::SpectrumToRgb() { set_weights(read_embedded(kCmfFile, 4), read_embedded(kD65File, 2), "built-in CIE tables"); }
+
 SpectrumToRgb::SpectrumToRgb(const std::filesystem::path& cie_dir) {
-  const auto cmf = read_csv(cie_dir / "cie1931-2deg-xyz-1nm.csv", 4);
-  const auto d65 = read_csv(cie_dir / "cie-d65-5nm.csv", 2);
+  set_weights(read_csv_file(cie_dir / kCmfFile, 4), read_csv_file(cie_dir / kD65File, 2), cie_dir.string());
+}
+
+void SpectrumToRgb::set_weights(const Rows& cmf, const Rows& d65, const std::string& where) {
   if (cmf.front()[0] > kFirstNm || cmf.back()[0] < kLastNm || d65.front()[0] > kFirstNm || d65.back()[0] < kLastNm)
-    throw InputError(cie_dir.string(), "CIE tables must cover 360-830 nm");
+    throw InputError(where, "CIE tables must cover 360-830 nm");
   // DESIGN.md §2: XYZ = Σ S·D65·cmf / Σ D65·ȳ over 360–830 nm at 1 nm.
   double norm = 0;
   for (int k = 0; k < kCount; ++k) {
@@ -131,32 +155,26 @@ Rgb SpectrumToRgb::rgb(std::span<const double> wl, std::span<const double> value
   return v.array();
 }
 
-std::filesystem::path default_cie_dir(const std::filesystem::path& data_file) {
-  std::vector<std::filesystem::path> tried;
-  auto holds_tables = [&](const std::filesystem::path& dir) {
-    tried.push_back(dir);
-    return std::filesystem::exists(dir / "cie1931-2deg-xyz-1nm.csv") && std::filesystem::exists(dir / "cie-d65-5nm.csv");
-  };
-  if (const char* env = std::getenv("BRDFKIT_CIE_DIR"); env && *env && holds_tables(env)) return env;
-  if (const auto sibling = std::filesystem::absolute(data_file).parent_path().parent_path() / "cie"; holds_tables(sibling))
-    return sibling;
-  if (const char* env = std::getenv("BRDFKIT_DATA_DIR"); env && *env) {
-    if (const auto dir = std::filesystem::path(env) / "cie"; holds_tables(dir)) return dir;
-  }
-  std::string list;
-  for (const auto& p : tried) list += (list.empty() ? "" : ", ") + p.string();
-  throw InputError(data_file.string(),
-                   "spectral data need the CIE tables (cie1931-2deg-xyz-1nm.csv, cie-d65-5nm.csv); not found in " +
-                       list + " (set BRDFKIT_CIE_DIR)");
+const SpectrumToRgb& built_in_spectrum_to_rgb() {
+  static const SpectrumToRgb built_in;
+  return built_in;
 }
 
-const SpectrumToRgb& spectrum_to_rgb_for(const std::filesystem::path& data_file) {
+const SpectrumToRgb& default_spectrum_to_rgb() {
+  const char* env = std::getenv("BRDFKIT_CIE_DIR");
+  if (!env || !*env) return built_in_spectrum_to_rgb();
+  const std::filesystem::path dir(env);
+  // An override that cannot be honoured is an error, not a silent fall-back to other numbers.
+  for (const char* name : {kCmfFile, kD65File})
+    if (!std::filesystem::is_regular_file(dir / name))
+      throw InputError("BRDFKIT_CIE_DIR=" + dir.string(),
+                       std::string("no ") + name + " in that folder (unset BRDFKIT_CIE_DIR to use the built-in CIE tables)");
   static std::mutex mutex;
   static std::map<std::filesystem::path, std::unique_ptr<SpectrumToRgb>> cache;
-  const auto dir = std::filesystem::weakly_canonical(default_cie_dir(data_file));
+  const auto key = std::filesystem::weakly_canonical(dir);
   std::lock_guard lock(mutex);
-  auto& slot = cache[dir];
-  if (!slot) slot = std::make_unique<SpectrumToRgb>(dir);
+  auto& slot = cache[key];
+  if (!slot) slot = std::make_unique<SpectrumToRgb>(key);
   return *slot;
 }
 

@@ -5,6 +5,8 @@
 // IEC 61966-2-1 XYZ → linear sRGB matrix. A constant spectrum of 1 maps to (1, 1, 1) within 2e-4.
 #include <filesystem>
 #include <span>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -14,6 +16,8 @@ namespace brdfkit {
 
 class SpectrumToRgb {
  public:
+  // The CIE tables compiled into brdfkit (the repository's resources/cie/, cie_tables.h).
+  SpectrumToRgb();
   // Loads cie1931-2deg-xyz-1nm.csv and cie-d65-5nm.csv from `cie_dir`; InputError if absent or bad.
   explicit SpectrumToRgb(const std::filesystem::path& cie_dir);
 
@@ -24,18 +28,23 @@ class SpectrumToRgb {
   Eigen::MatrixXd matrix(std::span<const double> wavelengths_nm) const;
 
  private:
+  // Rows of the two tables (first column λ in nm); `where` names their source in errors.
+  void set_weights(const std::vector<std::vector<double>>& cmf, const std::vector<std::vector<double>>& d65,
+                   const std::string& where);
+
   Eigen::Matrix<double, 471, 3> weights_;  // D65(λ)·cmf(λ) / Σ D65·ȳ at λ = 360…830 nm
 };
 
 // XYZ → linear sRGB (IEC 61966-2-1).
 Eigen::Matrix3d xyz_to_linear_srgb();
 
-// Where the CIE tables are looked for when no folder is given: $BRDFKIT_CIE_DIR, then
-// <data file's folder>/../cie (the shared data layout), then $BRDFKIT_DATA_DIR/cie.
-// InputError naming the places tried when none holds them.
-std::filesystem::path default_cie_dir(const std::filesystem::path& data_file);
+// The process-wide converter of the compiled-in tables.
+const SpectrumToRgb& built_in_spectrum_to_rgb();
 
-// The process-wide converter for default_cie_dir(data_file) (loaded once per folder).
-const SpectrumToRgb& spectrum_to_rgb_for(const std::filesystem::path& data_file);
+// The converter spectral readers use when given no folder: the tables of the folder named by
+// $BRDFKIT_CIE_DIR when it is set (InputError naming it when the folder lacks them; loaded once
+// per folder), the compiled-in ones otherwise. Never a folder found near the data: a file must
+// convert the same wherever it lies.
+const SpectrumToRgb& default_spectrum_to_rgb();
 
 }  // namespace brdfkit

@@ -1,5 +1,5 @@
 #pragma once
-// Multi-lobe models (DESIGN.md §6 "multi-lobe", issue #4.4): a diffuse term plus the specular
+// Multi-lobe models (DESIGN.md §6 "multi-lobe"): a diffuse term plus the specular
 // lobes of any registered models, e.g. two Cook-Torrance lobes (seed 002 §4.2) or Lambert + Ward
 // + Blinn-Phong, built at run time and addressed by the names of its components joined with '+':
 // `cook-torrance-beckmann+cook-torrance-beckmann`, `lambert+ward+blinn-phong`.

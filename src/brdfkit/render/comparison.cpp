@@ -4,6 +4,7 @@
 
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/render/image_io.h"
 #include "brdfkit/render/tone_map.h"
 
@@ -129,7 +130,7 @@ nlohmann::json write_comparison(const Comparison& c, const fs::path& stem, bool 
   write_png(fs::path(stem.string() + ".png"), tile_rgb8(rows, w, h), text);
   write_exr(fs::path(stem.string() + ".exr"), tile_images({linear}));
   const nlohmann::json j = comparison_json(c, files);
-  write_file_atomically(fs::path(stem.string() + ".json"), j.dump(2) + "\n");
+  write_file_atomically(fs::path(stem.string() + ".json"), json_text(j) + "\n");
   return j;
 }
 

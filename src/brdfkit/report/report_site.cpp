@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "brdfkit/core/atomic_file.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/render/comparison.h"
 #include "brdfkit/render/image_io.h"
@@ -34,7 +35,7 @@ std::string html_escape(std::string_view s) {
 
 // A JSON file and the script that hands the same data to the page (file:// pages cannot fetch).
 void write_data(const fs::path& stem, const char* variable, const nlohmann::json& j) {
-  const std::string text = j.dump();
+  const std::string text = json_text(j, -1);
   write_file_atomically(fs::path(stem.string() + ".json"), text + "\n");
   write_file_atomically(fs::path(stem.string() + ".js"), fmt::format("window.{} = {};\n", variable, text));
 }
@@ -151,7 +152,8 @@ std::string material_body(const MaterialResult& m, const MaterialPage& p) {
 render numbers: <a href="{0}/render.json">render.json</a>, linear renders: <a href="{0}/render.exr">render.exr</a>.</p>
 <h2>Renders</h2>
 <p class="note">{3}; {4}&times;{4} pixels, {5} samples per pixel, exposure {6:+.2f} EV ({7}). Under each fit: its sMAPE image
-(0 to {8}) and its CIEDE2000 &Delta;E image (0 to {9}, white = reference's 99th-percentile luminance), black to white.</p>
+(0 to {8}) and its CIEDE2000 &Delta;E image (0 to {9}; Lab white = the reference's 99th-percentile luminance), both in
+Green's cube-helix colour map, whose luminance rises from black (0) to white (the top of the range).</p>
 <div class="renders">
 {10}</div>
 {11}

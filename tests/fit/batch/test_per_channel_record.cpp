@@ -1,5 +1,5 @@
 // Fits with one lobe shape per channel (`fit --per-channel-shape`) are saved so that `error`
-// reads them back and prints the same metrics (issue #5): the JSON says "shape": "per-channel",
+// reads them back and prints the same metrics: the JSON says "shape": "per-channel",
 // and a record that says "shared" still refuses differing values of a shared parameter.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Start 0 of fit_model on real data (issue #5): the fit's own metric value is the metric of the
+// Start 0 of fit_model on real data: the fit's own metric value is the metric of the
 // parameters it returns for every single-lobe model (Ashikhmin-Shirley's was not: its lobe is not
 // scaled by a linear parameter, and the variable projection fitted kd (1/π + lobe) instead), the
 // scanned start is never worse than the defaults, and the CLI reports the scan.

@@ -1,4 +1,4 @@
-// Exact recovery from MERL tables (issue #5 acceptance): a material tabulated from known
+// Exact recovery from MERL tables: a material tabulated from known
 // parameters is fitted back from the default start (FitSettings{}: start 0 is the best point of the
 // start scan, fit/start_scan.h, which includes the table's defaults) under a metric whose domain
 // is the table's own cells (fit/metric_cells.h), so the optimum is the truth itself: relative
@@ -64,7 +64,7 @@ std::vector<Case> single_lobe_cases() {
       {"ward-aniso",
        {{"kd", kKd}, {"ks", Rgb(0.09, 0.07, 0.06)}, {"alpha_x", Rgb::Constant(0.15)}, {"alpha_y", Rgb::Constant(0.06)}}},
       // Rs is the lobe's colour and its Schlick F0: no linear specular scale, so every parameter but
-      // kd is a solver variable (fit/variable_projection.cpp, homogeneous()).
+      // kd is a solver variable (fit/engine/linear_structure.cpp, homogeneous()).
       {"ashikhmin-shirley", {{"kd", kKd}, {"Rs", Rgb(0.08, 0.06, 0.1)}, {"N", Rgb::Constant(300)}}},
       {"ashikhmin-shirley-dielectric",
        {{"kd", kKd}, {"ks", kKs}, {"N", Rgb::Constant(300)}, {"eta", Rgb::Constant(1.8)}}},

@@ -1,4 +1,4 @@
-// The scan that chooses start 0 of a fit (fit/start_scan.h, issue #5): its grids, that it never
+// The scan that chooses start 0 of a fit (fit/start_scan.h): its grids, that it never
 // returns a point worse than the defaults, that it finds the basin a local solver from the
 // defaults misses, and that it is deterministic.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Metrics on scattered measured samples (fit/metric_samples.h, issue #5): a synthetic Cornell-like
+// Metrics on scattered measured samples (fit/metric_samples.h): a synthetic Cornell-like
 // layout sampled from a known model, the real Cornell files through the CLI, the ALTA slice.
 #include <gtest/gtest.h>
 

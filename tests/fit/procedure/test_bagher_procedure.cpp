@@ -55,7 +55,7 @@ TEST(BagherProcedure, RecoversPerChannelParametersFromExactData) {
   EXPECT_EQ(r.steps.size(), 7u);  // two per channel and the metric
 }
 
-// The surrogate half of issue #5's acceptance, on the always-run budget: a full-size MERL table
+// The surrogate check of the published fits, on the always-run budget: a full-size MERL table
 // tabulated from a published Bagher fit (bagher2012-sgd.json) is fitted back by the procedure
 // to the published parameters. The MERL slices sit at cell centres, so no quantization enters
 // (bench/surrogate_acceptance.cpp runs the 12-material table).

@@ -1,8 +1,8 @@
 // Löw's smooth model under `low-e2` (seed 003 Eq. 32–33), the path where the colours are solver
-// parameters because ln(1 + ·) is not linear in ρ (fit/variable_projection.cpp, "transformed
-// residual"), and the always-run part of issue #5's surrogate acceptance: on MERL-format
-// surrogates of published Bagher SGD fits, brdfkit's low-smooth fit reaches an E2 no larger than
-// Löw's published smooth parameters' (bench/surrogate_acceptance.cpp runs 12 full-size materials).
+// parameters because ln(1 + ·) is not linear in ρ (fit/engine/log_residual_objective.cpp), and the
+// always-run part of the surrogate check: on MERL-format surrogates of published Bagher SGD fits,
+// brdfkit's low-smooth fit reaches an E2 no larger than Löw's published smooth parameters'
+// (bench/surrogate_acceptance.cpp runs 12 full-size materials).
 // To stay within the CI budget the tables hold only the cells a 4× coarsened cell domain reads
 // (one cell per 4 × 4 × 4 block of indices), and both E2 values are taken on that domain.
 #include <gtest/gtest.h>

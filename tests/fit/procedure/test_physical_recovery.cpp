@@ -1,4 +1,4 @@
-// Exact recovery from MERL tables (issue #5 acceptance) for the physically based single-lobe
+// Exact recovery from MERL tables for the physically based single-lobe
 // models `he`, `low-microfacet` and `holzschuch-pacanowski`, in the shape of
 // tests/fit_merl/test_merl_recovery.cpp: a table tabulated from known parameters on 1/27 of the
 // cells (tabulate_cells, k = 3; He on 1/125, see he_case) is fitted back under `ngan` on its own

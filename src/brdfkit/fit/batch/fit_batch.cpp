@@ -18,6 +18,7 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
+#include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"
@@ -39,10 +40,14 @@ std::vector<BatchInput> list_batch_inputs(const std::vector<std::string>& args) 
       if (ec) throw InputError(a, "cannot list the folder: " + ec.message());
       std::sort(files.begin(), files.end());
       for (const auto& f : files) out.push_back({f.stem().string(), f});
+    } else if (!fs::exists(a, ec)) {
+      throw InputError(a, ec ? "cannot be read: " + ec.message() : std::string("no such file or folder"));
     } else {
       out.push_back({fs::path(a).stem().string(), fs::path(a)});
     }
   }
+  // Every fit's JSON names its file and material: refuse names JSON cannot hold before any fit.
+  for (const BatchInput& in : out) require_json_text(in.file.string());
   if (out.empty()) throw InputError("fit-all", "no measured file among the inputs (.binary, .bsdf, .brdf, .alta)");
   std::map<std::string, fs::path> seen;
   for (const BatchInput& in : out) {
@@ -278,7 +283,7 @@ class Batch {
     std::error_code ec;
     fs::create_directories(json.parent_path(), ec);
     if (ec) throw InputError(json.parent_path().string(), "cannot create the folder: " + ec.message());
-    write_file_atomically(json, doc.dump(2) + "\n");
+    write_file_atomically(json, json_text(doc) + "\n");
     row.status = FitStatus::Fitted;
     row.json = json.string();
     for (const MetricReport& m : r.record.metrics) row.metrics.emplace_back(m.id, m.value);

@@ -22,8 +22,9 @@ struct BatchInput {
 };
 
 // Arguments → inputs: a folder gives every file with a measured extension (load.h) in it, sorted
-// by name; a file is taken as given (a missing one fails its fits, not the batch). InputError when
-// nothing is left or two inputs share a material name.
+// by name; a file is taken as given (one that cannot be read fails its fits, not the batch).
+// InputError, before anything is written, for an input that does not exist, a file name that is
+// not UTF-8 (the fits' JSON holds it), no file left, or two inputs that share a material name.
 std::vector<BatchInput> list_batch_inputs(const std::vector<std::string>& args);
 
 // The settings of a batch: the one type `fit-all`, and the Python batch read.

@@ -1,5 +1,5 @@
 #pragma once
-// How start 0 of a fit is chosen (issue #5). From the table's defaults alone a local solver can end
+// How start 0 of a fit is chosen. From the table's defaults alone a local solver can end
 // in a poorer basin than a scan finds (Cornell, ngan, defaults → scanned: he on acryl_blue 0.2007 →
 // 0.1701, ashikhmin-shirley-dielectric 0.3386 → 0.2833, ward on garnet_red 0.3732 → 0.3663). So
 // start 0 is the best point of a deterministic scan of the solver's box, evaluated with the

@@ -1,5 +1,5 @@
 #pragma once
-// The sample domain of a metric on a MERL table: the table's own cells (issue #5). A cell's value
+// The sample domain of a metric on a MERL table: the table's own cells. A cell's value
 // is exact at its centre (measured/merl_tabulate.h fills cells there, and a real measurement is
 // binned there), whereas a (θi, θo, Δφ) grid looked up in the nearest cell compares the model at
 // the grid point with the value at another point: a bias of ~0.7 % in a fitted Beckmann α.

@@ -1,5 +1,5 @@
 #pragma once
-// The sample domain of a metric on scattered measurements (issue #5): data that answer no lookup
+// The sample domain of a metric on scattered measurements: data that answer no lookup
 // at an arbitrary direction pair (Cornell files, ALTA slices) are compared with the model at their
 // own samples instead of a grid.
 //
