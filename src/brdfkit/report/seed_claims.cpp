@@ -1,6 +1,7 @@
 #include "brdfkit/report/seed_claims.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace brdfkit::report {
 namespace {
@@ -32,11 +33,13 @@ std::vector<ClaimResult> measure_seed_claims(const BatchResults& b) {
     std::vector<double> ratios;
     for (const MaterialResult& m : b.materials) {
       const FitResult *fa = find_fit(m, spec.a), *fb = find_fit(m, spec.b);
-      const auto ea = fa ? fa->metric(b.fit_metric) : std::nullopt, eb = fb ? fb->metric(b.fit_metric) : std::nullopt;
+      if (!fa || !fb) continue;
+      const std::optional<double> ea = fa->metric(b.fit_metric), eb = fb->metric(b.fit_metric);
       if (!ea || !eb || *eb <= 0) continue;
+      const double a = *ea, e = *eb;
       ++r.materials;
-      r.a_better += *ea < *eb;
-      ratios.push_back(*ea / *eb);
+      r.a_better += a < e;
+      ratios.push_back(a / e);
     }
     if (ratios.empty()) continue;
     std::sort(ratios.begin(), ratios.end());
