@@ -1,6 +1,6 @@
 // `brdfkit analyze FILE --what backscatter|fresnel|diffraction|albedo|ndf [--model M] [--params fit.json]
 // [--json | --csv] [-o FILE]`: observations from measured data (seed 000 §4.1 Eq. 7
-// and Eq. 10, seed 004 §4.2) and the tabulated-NDF estimation of seed 002 §5.1 (item 3). JSON and
+// and Eq. 10, seed 004 §4.2) and the tabulated-NDF estimation of seed 002 §5.1. JSON and
 // CSV are for plotting; -o writes atomically (JSON, or CSV with --csv).
 #include <fmt/format.h>
 #include <fmt/ranges.h>

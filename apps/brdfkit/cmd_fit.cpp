@@ -20,8 +20,6 @@
 #include "brdfkit/core/file_digest.h"
 #include "brdfkit/core/json_text.h"
 #include "brdfkit/export/export_fit.h"
-#include "brdfkit/core/error.h"
-#include "brdfkit/export/export_fit.h"
 #include "brdfkit/fit/fit_job.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"

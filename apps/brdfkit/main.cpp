@@ -4,8 +4,6 @@
 #include <iostream>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/text.h"
 #include "command.h"
@@ -84,11 +82,6 @@ int main(int argc, char** argv) {
     return print_error("brdfkit", flag_of(e.setting()) + ": " + e.detail(), 2);
   } catch (const brdfkit::InputError& e) {
     return print_error("brdfkit", e.what(), 2);
-  } catch (const nlohmann::json::type_error& e) {
-    // 316: a name that is not UTF-8 reached JSON output that does not go through json_text().
-    if (e.id == 316)
-      return print_error("brdfkit", std::string("a name is not valid UTF-8, which JSON output cannot hold: ") + e.what(), 2);
-    return print_error("brdfkit", std::string("internal error: ") + e.what(), 1);
   } catch (const std::exception& e) {
     return print_error("brdfkit", std::string("internal error: ") + e.what(), 1);
   }

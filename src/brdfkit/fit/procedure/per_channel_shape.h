@@ -1,9 +1,8 @@
 #pragma once
 // A model whose Shared parameters (the lobe shape) become PerChannel ones: fitting it fits one
 // shape per channel (seed 000 §5.1 fits R, G and B separately) with the same solver that fits
-// one shared shape. The wrapped model is
-// evaluated with each channel's own values, so a result is a valid ParamValues of the wrapped
-// model (whose Shared parameters then differ between channels).
+// one shared shape. The wrapped model is evaluated with each channel's own values, so a result is
+// a valid ParamValues of the wrapped model (whose Shared parameters then differ between channels).
 #include "brdfkit/models/model.h"
 
 namespace brdfkit::fit {
