@@ -1,9 +1,16 @@
 // `brdfkit fit-all DIR|FILES... --models M1,M2,…|all|single-lobe [--procedure P | --metric X]
 //  -o OUTDIR [--jobs N] [--compare PUBLISHED.json]`: fits every material × model (fit/batch/fit_batch.h),
 // one progress line per finished fit on stderr, the table of the fitting metric's error on stdout,
-// OUTDIR/<material>/<model>.json, summary.csv and table.txt. Exit 1 when any fit failed.
+// OUTDIR/<material>/<model>.json, summary.csv and table.txt. Several may share OUTDIR at once
+// (claims: fit/batch/fit_batch.h). Exit codes: 0 every fit saved (or running in another process),
+// 1 a fit failed or is unfinished, 2 bad input or an output that cannot be written (the message
+// names the file), 130 interrupted by Ctrl-C (fits in flight are finished and saved, the summary
+// marks the rest unfinished; a second Ctrl-C ends the process at once).
 #include <fmt/format.h>
+#include <signal.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <iostream>
 #include <memory>
 
@@ -16,6 +23,27 @@
 
 namespace brdfkit::cli {
 namespace {
+
+constexpr int kInterrupted = 130;  // 128 + SIGINT, what a shell reports for a process Ctrl-C ended
+
+std::atomic<bool> interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+// Async-signal-safe: sets the flag and writes one line with write(2). SA_RESETHAND restores the
+// default action, so a second Ctrl-C ends the process without waiting for the fits in flight.
+void on_interrupt(int) {
+  interrupted.store(true);
+  static const char msg[] = "\nfit-all: interrupted: finishing the fits in flight; Ctrl-C again abandons them\n";
+  if (::write(STDERR_FILENO, msg, sizeof msg - 1) < 0) return;
+}
+
+void stop_on_interrupt() {
+  struct sigaction sa = {};
+  sa.sa_handler = on_interrupt;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &sa, nullptr);
+}
 
 struct FitAllArgs {
   std::vector<std::string> inputs;
@@ -31,11 +59,13 @@ int run_fit_all(FitAllArgs& a) {
   const auto inputs = fit::list_batch_inputs(a.inputs);
   std::cerr << fmt::format("fit-all: {} material(s) x {} model(s) = {} fits, {} at once, into {}\n", inputs.size(),
                            models.size(), inputs.size() * models.size(), a.settings.jobs, a.output);
-  const fit::BatchSummary s = fit::run_fit_batch(inputs, models, a.output, a.settings,
-                                                 [](std::string_view line) { std::cerr << line << std::endl; });
+  stop_on_interrupt();
+  const fit::BatchSummary s = fit::run_fit_batch(
+      inputs, models, a.output, a.settings, [](std::string_view line) { std::cerr << line << std::endl; }, &interrupted);
   if (a.json) std::cout << json_text(fit::summary_json(s)) << "\n";
   else std::cout << fit::summary_table(s);
-  return s.count(fit::FitStatus::Failed) > 0 ? 1 : 0;
+  if (s.interrupted) return kInterrupted;
+  return s.count(fit::FitStatus::Failed) + s.count(fit::FitStatus::Unfinished) > 0 ? 1 : 0;
 }
 
 const CommandRegistration reg("fit-all", [](CLI::App& app) {

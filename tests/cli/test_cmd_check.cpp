@@ -58,3 +58,15 @@ TEST(CmdCheck, BadInputExitsTwoWithAMessage) {
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << c.args;
   }
 }
+
+// --samples is bounded on both sides: the upper bound keeps a check within minutes (cmd_check.cpp
+// says why 10^8); one line names the option and its range, before any check runs.
+TEST(CmdCheck, SamplesOutsideTheirRangeAreRefusedInOneLine) {
+  for (const char* n : {"999", "100000001", "10000000000000"}) {
+    const auto r = run_cli(std::string("check lambert --samples ") + n);
+    EXPECT_EQ(r.exit_code, 2) << n << "\n" << r.err;
+    EXPECT_EQ(r.err, "brdfkit: --samples: must be in [1000, 100000000] (got " + std::string(n) + ")\n") << n;
+    EXPECT_TRUE(r.out.empty()) << n;
+  }
+  EXPECT_EQ(run_cli("check lambert --samples 1000 --theta-o 30").exit_code, 0);
+}

@@ -13,6 +13,8 @@ std::string_view status_name(FitStatus s) {
     case FitStatus::Fitted: return "fitted";
     case FitStatus::Resumed: return "resumed";
     case FitStatus::Failed: return "failed";
+    case FitStatus::Elsewhere: return "running elsewhere";
+    case FitStatus::Unfinished: return "unfinished";
   }
   return "failed";
 }
@@ -39,6 +41,29 @@ std::string csv_field(const std::string& s) {
 
 std::string number(std::optional<double> v) { return v ? fmt::format("{}", *v) : ""; }
 
+bool saved(const BatchRow& r) { return r.status == FitStatus::Fitted || r.status == FitStatus::Resumed; }
+
+// The table's cell of a fit that has no value.
+std::string unsaved_cell(FitStatus s) { return s == FitStatus::Elsewhere ? "running" : std::string(status_name(s)); }
+
+// Below the table: each fit without a result, by status, with its reason.
+std::string unsaved_notes(const BatchSummary& s) {
+  std::string out;
+  const std::pair<FitStatus, const char*> sections[] = {
+      {FitStatus::Failed, "failed fits:"},
+      {FitStatus::Elsewhere, "running in another process (its results will be saved in this folder):"},
+      {FitStatus::Unfinished, "unfinished fits (a rerun fits them):"}};
+  for (const auto& [status, title] : sections) {
+    if (s.count(status) == 0) continue;
+    out += std::string(title) + "\n";
+    for (const BatchRow& r : s.rows)
+      if (r.status == status)
+        out += r.reason.empty() ? fmt::format("  {} / {}\n", r.material, r.model)
+                                : fmt::format("  {} / {}: {}\n", r.material, r.model, r.reason);
+  }
+  return out;
+}
+
 std::optional<double> published_of(const BatchSummary& s, const std::string& material) {
   for (size_t i = 0; i < s.materials.size() && i < s.published.size(); ++i)
     if (s.materials[i] == material) return s.published[i];
@@ -58,7 +83,7 @@ std::string summary_csv(const BatchSummary& s) {
                        s.fit_metric, status_name(r.status));
     for (auto id : metric_ids()) out.append(",").append(number(r.metric(std::string(id))));
     if (compare) out.append(",").append(number(published_of(s, r.material)));
-    const bool ok = r.status != FitStatus::Failed;
+    const bool ok = saved(r);
     out += fmt::format(",{},{},{},{}\n", ok ? fmt::format("{:.3f}", r.seconds) : "", ok ? std::to_string(r.iterations) : "",
                        ok ? (r.converged ? "yes" : "no") : "", csv_field(r.reason));
   }
@@ -69,7 +94,7 @@ std::string summary_table(const BatchSummary& s) {
   auto cell = [&](const std::string& material, const std::string& model) -> std::string {
     for (const BatchRow& r : s.rows)
       if (r.material == material && r.model == model) {
-        if (r.status == FitStatus::Failed) return "failed";
+        if (!saved(r)) return unsaved_cell(r.status);
         const auto v = r.metric(s.fit_metric);
         return v ? fmt::format("{:.4g}", *v) : "n/a";
       }
@@ -101,14 +126,7 @@ std::string summary_table(const BatchSummary& s) {
     }
     out += "\n";
   }
-  bool header = false;
-  for (const BatchRow& r : s.rows)
-    if (r.status == FitStatus::Failed) {
-      if (!header) out += "failed fits:\n";
-      header = true;
-      out += fmt::format("  {} / {}: {}\n", r.material, r.model, r.reason);
-    }
-  return out;
+  return out + unsaved_notes(s);
 }
 
 nlohmann::json summary_json(const BatchSummary& s) {
@@ -134,6 +152,9 @@ nlohmann::json summary_json(const BatchSummary& s) {
           {"fitted", s.count(FitStatus::Fitted)},
           {"resumed", s.count(FitStatus::Resumed)},
           {"failed", s.count(FitStatus::Failed)},
+          {"running_elsewhere", s.count(FitStatus::Elsewhere)},
+          {"unfinished", s.count(FitStatus::Unfinished)},
+          {"interrupted", s.interrupted},
           {"wall_seconds", s.wall_seconds},
           {"published_file", s.published_file},
           {"rows", rows}};

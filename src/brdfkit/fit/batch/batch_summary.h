@@ -10,15 +10,20 @@
 
 namespace brdfkit::fit {
 
-enum class FitStatus { Fitted, Resumed, Failed };
-std::string_view status_name(FitStatus s);  // "fitted", "resumed", "failed"
+// Resumed: a result already saved (by an earlier run or by another process sharing the folder).
+// Elsewhere: another process held the fit's claim (fit_batch.h) when the summary was written.
+// Unfinished: not fitted, because the batch was interrupted before this fit started, or because
+// the process that held its claim stopped without saving it; a rerun fits it.
+enum class FitStatus { Fitted, Resumed, Failed, Elsewhere, Unfinished };
+// "fitted", "resumed", "failed", "running elsewhere", "unfinished"
+std::string_view status_name(FitStatus s);
 
 struct BatchRow {
   std::string material;
   std::string model;
   FitStatus status = FitStatus::Failed;
-  std::string reason;  // why it failed (empty otherwise)
-  std::string json;    // the saved fit (empty when failed)
+  std::string reason;  // why it failed or is unfinished (empty otherwise)
+  std::string json;    // the saved fit (empty unless fitted or resumed)
   std::vector<std::pair<std::string, std::optional<double>>> metrics;  // reported values, nullopt = n/a
   double seconds = 0;  // the fit's own time (for a resumed fit, the time it took when it was made)
   int iterations = 0;
@@ -37,6 +42,7 @@ struct BatchSummary {
   std::string published_file;
   std::vector<std::optional<double>> published;  // parallel to `materials` (empty without --compare)
   double wall_seconds = 0;
+  bool interrupted = false;  // the batch was asked to stop (fit_batch.h) before its end
 
   size_t count(FitStatus s) const;
 };
@@ -44,8 +50,9 @@ struct BatchSummary {
 // Columns: material, model, procedure, fit_metric, status, one per metric id (metric.h order),
 // published_<fit_metric> with --compare, seconds, iterations, converged, reason.
 std::string summary_csv(const BatchSummary& s);
-// Rows = models, columns = materials; a cell is the fitting metric's value, "failed" (reasons
-// listed below the table) or "n/a"; with --compare a last row gives the published fits' values.
+// Rows = models, columns = materials; a cell is the fitting metric's value, "failed",
+// "running" (elsewhere), "unfinished" (each listed below the table with its reason) or "n/a";
+// with --compare a last row gives the published fits' values.
 std::string summary_table(const BatchSummary& s);
 nlohmann::json summary_json(const BatchSummary& s);
 

@@ -1,12 +1,11 @@
 #include "brdfkit/fit/batch/fit_batch.h"
 
 #include <fmt/format.h>
-#include <signal.h>
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <chrono>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -19,6 +18,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
 #include "brdfkit/core/json_text.h"
+#include "brdfkit/fit/batch/fit_claim.h"
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"
@@ -76,21 +76,6 @@ struct Material {
   int remaining = 0;
 };
 
-// Removes what a killed run left: write_file_atomically's "<file>.tmp.<pid>" of a process gone.
-void remove_stale_temporaries(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    const auto at = name.rfind(".tmp.");
-    if (at == std::string::npos) continue;
-    const std::string pid = name.substr(at + 5);
-    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    if (::kill(pid_t(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;  // its writer may still run
-    fs::remove(e.path(), ec);
-  }
-}
-
 std::optional<nlohmann::json> read_json(const fs::path& file) {
   std::ifstream in(file);
   if (!in) return std::nullopt;
@@ -105,8 +90,8 @@ std::optional<nlohmann::json> read_json(const fs::path& file) {
 class Batch {
  public:
   Batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models, const fs::path& out_dir,
-        const BatchSettings& opt, const BatchLog& log)
-      : inputs_(inputs), models_(models), out_(out_dir), opt_(opt), log_(log), materials_(inputs.size()) {
+        const BatchSettings& opt, const BatchLog& log, const std::atomic<bool>* stop)
+      : inputs_(inputs), models_(models), out_(out_dir), opt_(opt), log_(log), stop_(stop), materials_(inputs.size()) {
     metric_ = fitting_metric(opt.fit);
     report_.push_back(metric_);
     for (const std::string& id : opt.report)
@@ -124,80 +109,121 @@ class Batch {
     const auto t0 = std::chrono::steady_clock::now();
     const size_t n = inputs_.size() * models_.size();
     rows_.resize(n);
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-      for (size_t k = next++; k < n; k = next++) run_one(k);
-    };
-    const int threads = std::max(1, std::min<int>(opt_.jobs, int(n)));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
-
-    BatchSummary s;
-    s.procedure = opt_.fit.procedure;
-    s.fit_metric = metric_;
-    for (const auto& in : inputs_) s.materials.push_back(in.material);
-    for (const Model* m : models_) s.models.emplace_back(m->name());
-    s.rows = std::move(rows_);
-    if (published_) {
-      s.published_file = opt_.compare;
-      for (auto& m : materials_) s.published.push_back(m.published);
+    std::vector<size_t> all(n);
+    for (size_t k = 0; k < n; ++k) {
+      all[k] = k;
+      rows_[k].material = inputs_[k / models_.size()].material;
+      rows_[k].model = std::string(models_[k % models_.size()]->name());
     }
+    run_pool(all, false);
+    // A fit another process held is tried once more after the others: its holder may have saved
+    // it by now (resumed) or died (the claim is free again).
+    std::vector<size_t> again;
+    for (size_t k = 0; k < n; ++k)
+      if (rows_[k].status == FitStatus::Elsewhere) again.push_back(k);
+    run_pool(again, true);
+    if (output_error_) std::rethrow_exception(output_error_);
+    BatchSummary s = summarize();
     s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_file_atomically(out_ / "summary.csv", summary_csv(s));
-    write_file_atomically(out_ / "table.txt", summary_table(s));
-    log(fmt::format("fit-all: {} fits: {} fitted, {} skipped (saved by an earlier run), {} failed; {:.1f} s; "
-                    "results in {}",
-                    n, s.count(FitStatus::Fitted), s.count(FitStatus::Resumed), s.count(FitStatus::Failed),
-                    s.wall_seconds, out_.string()));
+    log_total(s);
     return s;
   }
 
  private:
+  bool stopping() const { return aborted_ || (stop_ && stop_->load()); }
+
+  // Runs the fits `ks` on opt_.jobs threads; a fit not started when the batch stops is unfinished.
+  void run_pool(const std::vector<size_t>& ks, bool last_try) {
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+      for (size_t i = next++; i < ks.size(); i = next++) {
+        if (!stopping()) {
+          run_one(ks[i], last_try);
+          continue;
+        }
+        rows_[ks[i]].status = FitStatus::Unfinished;
+        rows_[ks[i]].reason = "the batch was interrupted before this fit started";
+      }
+    };
+    const int threads = std::max(1, std::min<int>(opt_.jobs, int(ks.size())));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+  }
+
   void log(const std::string& line) {
     if (!log_) return;
     std::lock_guard lock(log_mu_);
     log_(line);
   }
 
-  void run_one(size_t k) {
+  void run_one(size_t k, bool last_try) {
     const size_t mi = k / models_.size();
     const BatchInput& in = inputs_[mi];
     const Model& model = *models_[k % models_.size()];
     Material& mat = materials_[mi];
     BatchRow& row = rows_[k];
-    row.material = in.material;
-    row.model = std::string(model.name());
-    const fs::path json = out_ / in.material / (row.model + ".json");
+    row = BatchRow{row.material, row.model};
     try {
-      fit_or_resume(in, model, mat, row, json);
+      fit_under_claim(in, model, mat, row);
+    } catch (const OutputError& e) {
+      abort(row, e);
+      return;
     } catch (const std::exception& e) {
       row.status = FitStatus::Failed;
       row.reason = e.what();
       row.metrics.clear();
     }
     if (published_) compare(in, mat);
-    {
-      std::lock_guard lock(mat.mu);
-      if (--mat.remaining == 0) {
-        mat.metrics.clear();
-        mat.store.reset();
-        mat.data.reset();
-      }
-    }
-    const size_t done = ++done_;
-    const std::string what = fmt::format("[{}/{}] {} {}", done, rows_.size(), in.material, row.model);
-    if (row.status == FitStatus::Failed) {
-      log(fmt::format("{}: FAILED: {}", what, row.reason));
+    if (row.status != FitStatus::Elsewhere || last_try) release(mat);
+    log_row(row, last_try);
+  }
+
+  // An output that cannot be written (full disk, file size limit) fails every later fit too: the
+  // batch starts no other fit and run() rethrows the first such error.
+  void abort(BatchRow& row, const OutputError& e) {
+    row.status = FitStatus::Failed;
+    row.reason = e.what();
+    std::lock_guard lock(log_mu_);
+    if (!output_error_) output_error_ = std::current_exception();
+    aborted_ = true;
+  }
+
+  void release(Material& mat) {
+    std::lock_guard lock(mat.mu);
+    if (--mat.remaining > 0) return;
+    mat.metrics.clear();
+    mat.store.reset();
+    mat.data.reset();
+    mat.loaded = false;
+  }
+
+  void log_row(const BatchRow& row, bool last_try) {
+    if (row.status == FitStatus::Elsewhere && !last_try) {
+      log(fmt::format("{} {}: claimed by another process; tried again after the others", row.material, row.model));
       return;
     }
+    const std::string what = fmt::format("[{}/{}] {} {}", ++done_, rows_.size(), row.material, row.model);
     const auto v = row.metric(metric_);
     const std::string value = v ? fmt::format("{} {:.5g}", metric_, *v) : metric_ + " n/a";
-    if (row.status == FitStatus::Resumed)
-      log(fmt::format("{}: skipped, saved by an earlier run ({})", what, value));
-    else
-      log(fmt::format("{}: {}, {:.1f} s{}", what, value, row.seconds, row.converged ? "" : " (not converged)"));
+    switch (row.status) {
+      case FitStatus::Failed: return log(fmt::format("{}: FAILED: {}", what, row.reason));
+      case FitStatus::Elsewhere: return log(what + ": running in another process");
+      case FitStatus::Unfinished: return log(what + ": unfinished: " + row.reason);
+      case FitStatus::Resumed: return log(fmt::format("{}: skipped, already saved ({})", what, value));
+      case FitStatus::Fitted:
+        return log(fmt::format("{}: {}, {:.1f} s{}", what, value, row.seconds, row.converged ? "" : " (not converged)"));
+    }
+  }
+
+  void log_total(const BatchSummary& s) {
+    std::string more;
+    if (const size_t e = s.count(FitStatus::Elsewhere)) more += fmt::format(", {} running elsewhere", e);
+    if (const size_t u = s.count(FitStatus::Unfinished)) more += fmt::format(", {} unfinished", u);
+    log(fmt::format("fit-all: {} fits: {} fitted, {} skipped (already saved), {} failed{}{}; {:.1f} s; results in {}",
+                    s.rows.size(), s.count(FitStatus::Fitted), s.count(FitStatus::Resumed), s.count(FitStatus::Failed),
+                    more, s.interrupted ? " (interrupted)" : "", s.wall_seconds, out_.string()));
   }
 
   // The data's checksum (for the resume check) without loading the data.
@@ -256,21 +282,43 @@ class Batch {
     return out;
   }
 
-  void fit_or_resume(const BatchInput& in, const Model& model, Material& mat, BatchRow& row, const fs::path& json) {
+  fs::path result_file(const BatchRow& row) const { return out_ / row.material / (row.model + ".json"); }
+
+  // The claim protocol of fit_batch.h: claim, clear a killed writer's temporary, keep a matching
+  // result or fit and save one.
+  void fit_under_claim(const BatchInput& in, const Model& model, Material& mat, BatchRow& row) {
     const std::string sha = checksum(in, mat);
-    if (auto saved = read_json(json); saved && fit_job_matches(*saved, row.model, sha, opt_.fit, report_)) {
-      row.status = FitStatus::Resumed;
-      row.json = json.string();
-      for (const std::string& id : report_) {
-        const auto& v = (*saved)["metrics"][id];
-        row.metrics.emplace_back(id, v.is_number() ? std::optional<double>(v.get<double>()) : std::nullopt);
-      }
-      const auto& f = (*saved)["fit"];
-      row.seconds = f.value("seconds", 0.0);
-      row.iterations = f.value("iterations", 0);
-      row.converged = f.value("converged", false);
+    const FitClaim claim(fit_claim_file(out_, row.material, row.model));
+    if (!claim.held()) {
+      row.status = FitStatus::Elsewhere;
       return;
     }
+    const fs::path json = result_file(row);
+    remove_temporaries_of(json);
+    if (resume(json, sha, row)) return;
+    fit_and_save(in, model, mat, row, sha);
+  }
+
+  // True, with the row filled, when `json` holds this fit under these settings.
+  bool resume(const fs::path& json, const std::string& sha, BatchRow& row) const {
+    const auto saved = read_json(json);
+    if (!saved || !fit_job_matches(*saved, row.model, sha, opt_.fit, report_)) return false;
+    row.status = FitStatus::Resumed;
+    row.reason.clear();
+    row.json = json.string();
+    row.metrics.clear();
+    for (const std::string& id : report_) {
+      const auto& v = (*saved)["metrics"][id];
+      row.metrics.emplace_back(id, v.is_number() ? std::optional<double>(v.get<double>()) : std::nullopt);
+    }
+    const auto& f = (*saved)["fit"];
+    row.seconds = f.value("seconds", 0.0);
+    row.iterations = f.value("iterations", 0);
+    row.converged = f.value("converged", false);
+    return true;
+  }
+
+  void fit_and_save(const BatchInput& in, const Model& model, Material& mat, BatchRow& row, const std::string& sha) {
     MetricStore* store = nullptr;
     {
       std::lock_guard lock(mat.mu);
@@ -280,9 +328,10 @@ class Batch {
     FitJobResult r = run_fit_job(model, *store, in.file.string(), sha, opt_.fit);
     r.record.metrics = report(mat, model, r.record.values);
     const nlohmann::json doc = fit_job_json(r, opt_.fit, in.material);
+    const fs::path json = result_file(row);
     std::error_code ec;
     fs::create_directories(json.parent_path(), ec);
-    if (ec) throw InputError(json.parent_path().string(), "cannot create the folder: " + ec.message());
+    if (ec) throw OutputError(json.parent_path().string(), "cannot create the folder: " + ec.message());
     write_file_atomically(json, json_text(doc) + "\n");
     row.status = FitStatus::Fitted;
     row.json = json.string();
@@ -290,6 +339,47 @@ class Batch {
     row.seconds = r.record.seconds;
     row.iterations = r.record.iterations;
     row.converged = r.record.converged;
+  }
+
+  // The summary, from the results on disk, written under the summary claim: concurrent batches
+  // write it one after the other, and the last one sees every result the others saved.
+  BatchSummary summarize() {
+    const FitClaim lock(summary_claim_file(out_), /*wait=*/true);
+    for (size_t k = 0; k < rows_.size(); ++k) reread(k);
+    BatchSummary s;
+    s.procedure = opt_.fit.procedure;
+    s.fit_metric = metric_;
+    for (const auto& in : inputs_) s.materials.push_back(in.material);
+    for (const Model* m : models_) s.models.emplace_back(m->name());
+    s.rows = rows_;
+    if (published_) {
+      s.published_file = opt_.compare;
+      for (auto& m : materials_) s.published.push_back(m.published);
+    }
+    s.interrupted = stop_ && stop_->load();
+    for (const char* name : {"summary.csv", "table.txt"}) remove_temporaries_of(out_ / name);
+    write_file_atomically(out_ / "summary.csv", summary_csv(s));
+    write_file_atomically(out_ / "table.txt", summary_table(s));
+    return s;
+  }
+
+  // A fit this batch did not save: another process may have saved it since, or stopped without.
+  void reread(size_t k) {
+    BatchRow& row = rows_[k];
+    if (row.status != FitStatus::Elsewhere && row.status != FitStatus::Unfinished) return;
+    std::error_code ec;
+    const fs::path json = result_file(row);
+    if (fs::exists(json, ec)) {
+      try {
+        if (resume(json, checksum(inputs_[k / models_.size()], materials_[k / models_.size()]), row)) return;
+      } catch (const std::exception&) {
+        // Unreadable data: the row keeps its status; its other fits say why.
+      }
+    }
+    if (row.status == FitStatus::Elsewhere && !claimed_elsewhere(fit_claim_file(out_, row.material, row.model))) {
+      row.status = FitStatus::Unfinished;
+      row.reason = "another process claimed this fit and saved no result (it failed or was stopped)";
+    }
   }
 
   // The published fit of this material under the fitting metric, once per material.
@@ -315,6 +405,7 @@ class Batch {
   const fs::path out_;
   const BatchSettings& opt_;
   const BatchLog& log_;
+  const std::atomic<bool>* stop_;
   std::string metric_;
   std::vector<std::string> report_;
   std::vector<Material> materials_;
@@ -323,6 +414,8 @@ class Batch {
   std::set<std::string> published_names_;
   std::mutex log_mu_;
   std::atomic<size_t> done_{0};
+  std::atomic<bool> aborted_{false};
+  std::exception_ptr output_error_;
 };
 
 }  // namespace
@@ -335,15 +428,14 @@ void BatchSettings::validate() const {
 }
 
 BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
-                           const fs::path& out_dir, const BatchSettings& settings, const BatchLog& log) {
+                           const fs::path& out_dir, const BatchSettings& settings, const BatchLog& log,
+                           const std::atomic<bool>* stop) {
   settings.validate();
   if (models.empty()) throw SettingError("models", "no model to fit");
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) throw InputError(out_dir.string(), "cannot create the output folder");
-  for (const BatchInput& in : inputs) remove_stale_temporaries(out_dir / in.material);
-  remove_stale_temporaries(out_dir);
-  Batch batch(inputs, models, out_dir, settings, log);
+  Batch batch(inputs, models, out_dir, settings, log, stop);
   return batch.run();
 }
 

@@ -4,6 +4,27 @@
 // most the fits in flight; a rerun keeps every saved fit whose data SHA-256, model, version and
 // options match (fit_job_matches) and refits the rest. A failed fit (unreadable file, data the
 // metric cannot answer, solver failure) becomes a row with its reason; the batch goes on.
+//
+// Several batches may share OUTDIR at once (two `fit-all`, a Python batch, threads of one
+// process); none corrupts or repeats another's fit. The protocol (claims: fit_claim.h):
+//  1. A fit is claimed first: flock(LOCK_EX | LOCK_NB) on OUTDIR/.claims/fits/<material>/<model>.lock,
+//     held while the fit is checked, run and saved. A claim held elsewhere is skipped and tried
+//     once more after the batch's other fits; still held then, the row is "running elsewhere".
+//     The kernel drops a claim when its holder dies (even by SIGKILL): no claim goes stale.
+//  2. Holding the claim: the temporaries of <model>.json (a writer killed mid-write: nobody else
+//     can be writing it) are removed, a saved result that matches is kept ("resumed"), else the
+//     fit runs and its JSON is written to a temporary in the same folder and renamed into place.
+//  3. summary.csv and table.txt are written last, atomically, under OUTDIR/.claims/summary.lock
+//     (waited for): each fit this batch did not save is read again from disk first, so the
+//     batch that finishes last lists every fit of its inputs × models exactly once, with the
+//     results the others saved.
+// The lock files stay in OUTDIR/.claims (empty files; removing one would race with its next holder).
+//
+// Stopping: when *stop becomes true (the CLI sets it on Ctrl-C) no further fit starts; fits in
+// flight finish and are saved (a fit cannot be abandoned halfway); the rest are "unfinished", and
+// the summary is written. An output that cannot be written (OutputError: full disk, file size
+// limit) stops the batch the same way but writes no summary: run_fit_batch rethrows it.
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -43,9 +64,10 @@ struct BatchSettings {
 using BatchLog = std::function<void(std::string_view)>;
 
 // Runs the batch into `out_dir` and writes summary.csv and table.txt there. SettingError for bad
-// settings, InputError for an unreadable compare file (before any fit starts).
+// settings, InputError for an unreadable compare file (before any fit starts), OutputError for a
+// result or summary that cannot be written. `stop` (may be null) is read between fits.
 BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
                            const std::filesystem::path& out_dir, const BatchSettings& settings,
-                           const BatchLog& log = {});
+                           const BatchLog& log = {}, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace brdfkit::fit
