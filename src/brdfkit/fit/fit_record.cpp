@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "brdfkit/core/atomic_file.h"
@@ -142,8 +144,11 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
   }
   if (j.contains("grid_coarsen")) {
     const auto& g = j["grid_coarsen"];
-    if (!g.is_number_integer() || g.get<int>() < 1) throw InputError(where + ": field 'grid_coarsen'", "must be an integer >= 1");
-    r.coarsen = g.get<int>();
+    // Read at full width: get<int>() would wrap 4294967297 to 1 and accept it.
+    const std::int64_t coarsen = g.is_number_integer() ? g.get<std::int64_t>() : 0;
+    if (coarsen < 1 || coarsen > std::numeric_limits<int>::max())
+      throw InputError(where + ": field 'grid_coarsen'", fmt::format("must be an integer in [1, {}]", std::numeric_limits<int>::max()));
+    r.coarsen = int(coarsen);
   }
   if (j.contains("metrics") && j["metrics"].is_object())
     for (const auto& it : j["metrics"].items())

@@ -71,11 +71,27 @@ class Reader {
   size_t pos_ = 0;
 };
 
+// Whether a field of `shape` with entries of `entry_bytes` bytes fits in `room` bytes: Π shape ≤
+// ⌊room / entry_bytes⌋, tested by dividing, so no product wraps. (A wrapped product passes a bounds
+// check while the shape still sizes vectors and loops: 2^24 × 2^24 × 2^14 float32 is 2^64 bytes,
+// 0 once wrapped.)
+bool fits_in(const std::vector<std::uint64_t>& shape, size_t entry_bytes, size_t room) {
+  if (std::find(shape.begin(), shape.end(), 0) != shape.end()) return true;  // no entries at all
+  std::uint64_t entries = room / entry_bytes;
+  for (const std::uint64_t s : shape) {
+    if (s > entries) return false;
+    entries /= s;
+  }
+  return true;
+}
+
 std::vector<float> floats(const std::vector<std::uint8_t>& bytes, const Field& f) {
   std::vector<float> v(f.count());
   // The format is little-endian like every machine brdfkit builds for; copy bytes as they are.
   static_assert(std::endian::native == std::endian::little, "tensor_file reader assumes a little-endian host");
-  std::memcpy(v.data(), bytes.data() + f.offset, v.size() * sizeof(float));
+  // A field with a zero dimension has no entries; an empty vector's data() may be null, which
+  // memcpy may not be given even for 0 bytes.
+  if (!v.empty()) std::memcpy(v.data(), bytes.data() + f.offset, v.size() * sizeof(float));
   return v;
 }
 
@@ -225,9 +241,10 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     if (ts == 0) throw InputError(path_, fmt::format("field '{}': unknown type code {}", name, f.type));
     for (auto s : f.shape)
       if (s > (1u << 24)) throw InputError(path_, fmt::format("field '{}': implausible dimension {}", name, s));
-    if (f.offset > bytes.size() || f.count() * ts > bytes.size() - f.offset)
-      throw InputError(path_, fmt::format("field '{}': data ({} bytes at offset {}) extend past the end of the file ({} bytes): truncated?",
-                                          name, f.count() * ts, f.offset, bytes.size()));
+    if (f.offset > bytes.size() || !fits_in(f.shape, ts, bytes.size() - f.offset))
+      throw InputError(path_, fmt::format("field '{}': data (shape {} of {}-byte entries at offset {}) extend past the end of the file "
+                                          "({} bytes): truncated?",
+                                          name, shape_string(f.shape), ts, f.offset, bytes.size()));
     fields[name] = std::move(f);
   }
 
@@ -291,6 +308,7 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     const Field& wf = field("wavelengths", TensorType::Float32, 1);
     const std::vector<float> wl_f = floats(bytes, wf);
     const size_t nl = wl_f.size();
+    if (nl == 0) throw InputError(path_, "field 'wavelengths' is empty: 'spectra' needs at least one wavelength");
     if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != ls[2] || f.shape[4] != ls[3])
       throw InputError(path_, fmt::format("field 'spectra' has shape {}, expected [1,{},{},{},{}]", shape_string(f.shape), nt, nl, grid_, grid_));
     const std::vector<double> wl(wl_f.begin(), wl_f.end());

@@ -4,6 +4,10 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fresnel/bagher_fresnel.h"
@@ -60,6 +64,43 @@ std::array<double, 3> scaled(std::array<double, 3> x, double s) {
   return x;
 }
 
+// A lobe's "lobe" name; empty when absent. InputError naming `where` when it is not a string.
+std::string lobe_name(const nlohmann::json& lobe, const std::string& where) {
+  if (!lobe.contains("lobe")) return "";
+  if (!lobe["lobe"].is_string()) throw InputError(where, "a lobe whose 'lobe' is not a string");
+  return lobe["lobe"].get<std::string>();
+}
+
+// Published values may lie outside a model's fitting bounds (published_fits.h), but not where the
+// model is undefined: there its evaluation throws (SGD's Γ(1 − p, α) needs p < 2) or gives NaN, and
+// the error would name neither the file nor the parameter. So a BRDF with a value outside its
+// bounds is evaluated at a few direction pairs away from the horizon, and refused, naming the first
+// such value, unless every result is finite. Whatever the model throws there counts as undefined
+// (its tables throw std::runtime_error when Λ cannot be tabulated).
+void require_defined(const Brdf& brdf, const std::string& where) {
+  const ParamTable& table = brdf.model().params();
+  std::string outside;
+  for (size_t i = 0; i < table.size() && outside.empty(); ++i)
+    for (int c = 0; c < 3 && outside.empty(); ++c) {
+      const double x = brdf.values().values[size_t(c)][i];
+      if (!(x >= table[i].lower && x <= table[i].upper))
+        outside = fmt::format("parameter '{}' = {} (channel {}) is outside the model's bounds [{}, {}]", table[i].name, x,
+                              "RGB"[c], table[i].lower, table[i].upper);
+    }
+  if (outside.empty()) return;
+  const std::pair<double, double> pairs[] = {{0.0, 0.0}, {0.5, 0.5}, {1.0, 0.3}, {1.2, 1.2}};  // (θi, θo), φo − φi = π
+  for (const auto& [ti, to] : pairs) {
+    std::string why;
+    try {
+      const Rgb v = brdf.eval(spherical_direction(ti, 0.0), spherical_direction(to, kPi));
+      if (!v.allFinite()) why = fmt::format("the BRDF is not finite at θi = {}, θo = {} rad", ti, to);
+    } catch (const std::exception& e) {
+      why = e.what();
+    }
+    if (!why.empty()) throw InputError(where, outside + " and the model is not defined there: " + why);
+  }
+}
+
 }  // namespace
 
 const Model* bagher_sgd_model() {
@@ -90,8 +131,10 @@ PublishedFits PublishedFits::read(const std::filesystem::path& file) {
   // The specular lobe's name: the first lobe that is not the Lambertian one.
   const auto& first = out.materials_.begin().value();
   if (!first.is_array()) throw InputError(where, "material '" + out.materials_.begin().key() + "' is not a list of lobes");
+  const std::string first_where = where + ": material '" + out.materials_.begin().key() + "'";
   for (const auto& lobe : first)
-    if (lobe.is_object() && lobe.value("lobe", "") != "Lambertian") out.lobe_ = lobe.value("lobe", "");
+    if (lobe.is_object())
+      if (std::string name = lobe_name(lobe, first_where); name != "Lambertian") out.lobe_ = std::move(name);
   if (out.lobe_ == "LowSmooth") out.model_ = "low-smooth";
   else if (out.lobe_ == "LowAshikhminShirley") out.model_ = "ashikhmin-shirley-dielectric";
   else if (out.lobe_ == "LowCookTorrance") out.model_ = "cook-torrance-low2012";
@@ -124,7 +167,7 @@ Brdf PublishedFits::brdf(const std::string& material) const {
   for (const auto& lobe : materials_[material]) {
     if (!lobe.is_object() || !lobe.contains("params") || !lobe["params"].is_object())
       throw InputError(mwhere, "a lobe without a 'params' object");
-    const std::string name = lobe.value("lobe", "");
+    const std::string name = lobe_name(lobe, mwhere);
     const auto& p = lobe["params"];
     const std::string lwhere = mwhere + ", lobe '" + name + "'";
     if (name == "Lambertian") {
@@ -171,7 +214,9 @@ Brdf PublishedFits::brdf(const std::string& material) const {
   }
   if (!have_diffuse) throw InputError(mwhere, "no 'Lambertian' lobe");
   if (!have_lobe) throw InputError(mwhere, "no '" + lobe_ + "' lobe");
-  return Brdf(*m, std::move(v));
+  Brdf brdf(*m, std::move(v));
+  require_defined(brdf, mwhere);
+  return brdf;
 }
 
 std::vector<std::filesystem::path> published_fit_files(const std::filesystem::path& dir) {

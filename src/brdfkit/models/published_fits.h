@@ -14,7 +14,9 @@
 //   LowMicrofacetFit     low-microfacet                  A = A[c]/π (the file's lobe carries a 1/π that seed 003
 //                                                        Eq. 15 does not print), B, C, eta as published
 // plus the Lambertian albedo → kd everywhere. Values are loaded as published, even where a
-// fitting bound of the model is narrower (one Cook-Torrance roughness is 2.09 > 2).
+// fitting bound of the model is narrower (one Cook-Torrance roughness is 2.09 > 2), unless the
+// model is undefined there (not finite, or throwing, at a few direction pairs): such a value is
+// refused naming the file, material, parameter and channel.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -69,7 +70,9 @@ template <class T, class G> T integrate_log_panels(const G& g, double lo, double
     gmax = std::max(gmax, edge[j]);
   }
   if (!(gmax > 0.0)) return T(0);
-  const double cut = 1e-20 * gmax;
+  // Floored at the smallest normal double: 1e-20·gmax underflows to 0 for gmax below ~5e-304, and
+  // log_edge would then subtract −∞ from −∞ (a NaN cast to int). Below that floor g is negligible.
+  const double cut = std::max(1e-20 * gmax, std::numeric_limits<double>::min());
   auto active = [&](int j) { return j >= 0 && j < n_panels && (edge[j] > cut || edge[j + 1] > cut); };
   using Rule = boost::math::quadrature::gauss<double, kGaussPoints>;
   const auto& xs = Rule::abscissa();
