@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 
 #include "brdfkit/fit/batch/fit_batch.h"
 #include "brdfkit/fit/settings/fit_settings.h"
 #include "brdfkit/measured/merl.h"
 #include "support/fit_test_util.h"
+#include "support/output_lines.h"
 #include "support/test_util.h"
 
 namespace brdfkit::test {
@@ -144,15 +146,23 @@ TEST_F(CliInputErrors, CountSettingsHaveADocumentedRange) {
   expect_refused("analyze " + file + " --what ndf --starts 1000000", range(FitSettings::kMaxStarts));
   EXPECT_FALSE(fs::exists(path("x.json")));
   EXPECT_FALSE(fs::exists(path("x_out")));
-  // The help says what each count accepts.
+  // The help says what each count accepts, on the option's own line ("1 to 1000" alone would
+  // also be found in --max-iterations' "1 to 100000").
+  const auto states_range = [](const std::string& help, const std::string& flag, int hi) {
+    const auto line = line_led_by(help, flag);
+    const std::string range = "1 to " + std::to_string(hi) + ")";
+    const bool ends = line && line->size() > range.size() && line->ends_with(range) &&
+                      !std::isdigit(static_cast<unsigned char>((*line)[line->size() - range.size() - 1]));
+    EXPECT_TRUE(ends) << flag << " " << hi << "\n" << help;
+  };
   for (const char* sub : {"fit", "fit-all"}) {
     const CliResult help = run_cli(std::string(sub) + " --help");
     EXPECT_EQ(help.exit_code, 0);
-    for (int hi : {FitSettings::kMaxStarts, FitSettings::kMaxIterations, FitSettings::kMaxCoarsen})
-      EXPECT_NE(help.out.find("1 to " + std::to_string(hi)), std::string::npos) << sub << " " << hi << "\n" << help.out;
+    states_range(help.out, "--starts", FitSettings::kMaxStarts);
+    states_range(help.out, "--max-iterations", FitSettings::kMaxIterations);
+    states_range(help.out, "--coarsen", FitSettings::kMaxCoarsen);
   }
-  EXPECT_NE(run_cli("fit-all --help").out.find("1 to " + std::to_string(fit::BatchSettings::kMaxJobs)),
-            std::string::npos);
+  states_range(run_cli("fit-all --help").out, "-j,--jobs", fit::BatchSettings::kMaxJobs);
 }
 
 }  // namespace

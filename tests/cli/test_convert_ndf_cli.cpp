@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/output_lines.h"
 #include "support/test_util.h"
 
 namespace brdfkit::test {
@@ -28,18 +29,25 @@ TEST(ConvertNdfCli, RmseJson) {
 TEST(ConvertNdfCli, HalfMaxAndSawickiText) {
   auto r = run_cli("convert-ndf --from beckmann --to ggx 0.2 --method half-max");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("ggx C_TR ="), std::string::npos) << r.out;
+  // Half-max: the result's beta_half is the source's (the line states both).
+  EXPECT_EQ(test::lines_of(r.out).at(0).rfind("beckmann m_B = 0.2  ->  ggx C_TR = ", 0), 0u) << r.out;
+  const auto half = test::line_led_by(r.out, "beta_half:");
+  ASSERT_TRUE(half) << r.out;
+  const auto ht = test::tokens_of(*half);
+  ASSERT_EQ(ht.size(), 7u) << *half;
+  EXPECT_EQ(ht[1], ht[4]) << *half;
   r = run_cli("convert-ndf --from beckmann --to ggx 0.2 --method sawicki");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("0.23552"), std::string::npos) << r.out;
+  // Seed 001 Table 4: C_TR = 1.2 m_B − 0.56 m_B³ = 0.23552 at m_B = 0.2.
+  EXPECT_EQ(test::lines_of(r.out).at(0), "beckmann m_B = 0.2  ->  ggx C_TR = 0.23552") << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
 TEST(ConvertNdfCli, SawickiOutsideRangeWarnsAndFallsBack) {
   const auto r = run_cli("convert-ndf --from beckmann --to blinn-phong 0.6 --method sawicki --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("brdfkit: warning:"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("0.0044"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "brdfkit: warning: m_B = 0.6 is outside the range m_B in [0.0044, 0.4473] seed 001's formulas "
+                   "were fitted on; using rmse\n");
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["method"]["requested"], "sawicki");
   EXPECT_EQ(j["method"]["used"], "rmse");
@@ -49,11 +57,11 @@ TEST(ConvertNdfCli, SawickiOutsideRangeWarnsAndFallsBack) {
 TEST(ConvertNdfCli, BadInputExitsTwoWithMessage) {
   auto r = run_cli("convert-ndf --from beckmann --to phong 0.2");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("brdfkit: --to: unknown distribution 'phong'"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("blinn-phong"), std::string::npos) << r.err;  // lists the known names
+  const std::string known = "beckmann, blinn-phong, gaussian, ggx, exponential, schlick-rational, sawicki-rational";
+  EXPECT_EQ(r.err, "brdfkit: --to: unknown distribution 'phong'; known distributions: " + known + "\n");
   r = run_cli("convert-ndf --from nope --to ggx 0.2");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("brdfkit: --from: unknown distribution 'nope'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "brdfkit: --from: unknown distribution 'nope'; known distributions: " + known + "\n");
   r = run_cli("convert-ndf --from beckmann --to ggx 0.9");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("brdfkit: VALUE: beckmann m_B = 0.9 is outside"), std::string::npos) << r.err;
@@ -64,10 +72,10 @@ TEST(ConvertNdfCli, BadInputExitsTwoWithMessage) {
   EXPECT_NE(r.err.find("brdfkit: --method: unknown method 'fancy'"), std::string::npos) << r.err;
   r = run_cli("convert-ndf --from beckmann --to ggx");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("VALUE"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "brdfkit: VALUE: missing: give the source distribution's parameter value\n");
   r = run_cli("convert-ndf --to ggx 0.2");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--from"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "brdfkit: --from: missing: name the source distribution (or use --table)\n");
   r = run_cli("convert-ndf --from ggx --to beckmann 0.9 --method half-max");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("never falls to half its peak"), std::string::npos) << r.err;
@@ -75,7 +83,8 @@ TEST(ConvertNdfCli, BadInputExitsTwoWithMessage) {
   EXPECT_EQ(r.exit_code, 2);
   r = run_cli("convert-ndf --table 3");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--table"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "brdfkit: --table: beckmann m_B = 3 is outside [1e-06, 0.707107], where D/D(0) is a single "
+                   "decreasing lobe\n");
 }
 
 TEST(ConvertNdfCli, TableJsonAndText) {
@@ -88,8 +97,19 @@ TEST(ConvertNdfCli, TableJsonAndText) {
   EXPECT_NEAR(j["rows"][1]["N"]["value"].get<double>(), 19997, 0.5);
   r = run_cli("convert-ndf --table");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* s : {"m_B", "N (RMSE)", "m_G (RMSE)", "N_DS (RMSE)", "C_TR (RMSE)", "0.4473", "0.004473"})
-    EXPECT_NE(r.out.find(s), std::string::npos) << s;
+  // The header row, then one row per m_B of the paper, led by its value; the 0.2 row holds the
+  // JSON's numbers (N 47.33, C_TR 0.2357).
+  const auto header = test::line_led_by(r.out, "m_B");
+  ASSERT_TRUE(header) << r.out;
+  EXPECT_EQ(test::tokens_of(*header), (std::vector<std::string>{"m_B", "N", "by", "Eq.", "11", "(RMSE)", "N", "(RMSE)", "m_G",
+                                                                  "(RMSE)", "N_DS", "(RMSE)", "C_TR", "(RMSE)"}));
+  for (const char* m : {"0.4473", "0.004473"}) EXPECT_TRUE(test::line_led_by(r.out, m)) << m;
+  const auto row = test::line_led_by(r.out, "0.2");
+  ASSERT_TRUE(row) << r.out;
+  const auto t = test::tokens_of(*row);
+  ASSERT_EQ(t.size(), 11u) << *row;
+  EXPECT_EQ(t[3], "47.33") << *row;
+  EXPECT_EQ(t[9], "0.2357") << *row;
 }
 
 TEST(ConvertNdfCli, HelpStatesTheDomain) {
@@ -97,7 +117,9 @@ TEST(ConvertNdfCli, HelpStatesTheDomain) {
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("min(4 m_B, pi/2)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("2001 samples"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("sawicki-rational"), std::string::npos) << r.out;
+  const auto sawicki = test::line_led_by(r.out, "sawicki-rational");
+  ASSERT_TRUE(sawicki) << r.out;
+  EXPECT_EQ(test::tokens_of(*sawicki).at(1), "N_DS") << *sawicki;
 }
 
 }  // namespace

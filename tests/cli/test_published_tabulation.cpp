@@ -1,4 +1,4 @@
-// Issue #4 acceptance: "The published parameter sets in ../shared/data/published-fits/ for the
+// The requirement: "The published parameter sets in ../shared/data/published-fits/ for the
 // Bagher SGD and Löw models load into these models with the conventions each file states, and
 // tabulated into MERL files give finite, non-negative BRDFs for all 100 materials."
 //
@@ -8,19 +8,27 @@
 // packed towards 0 (the peaks of sharp lobes) up to 89, θd every 6th index plus 85…89 (grazing),
 // φd at 0, 1, 45, 89, 90, 135, 178, 179 — 2 880 cells, the grazing ones included. Then a
 // full-size table (merl::tabulate) of the sharpest material (chrome) for every supported file
-// (a rough one, pink-felt, is tabulated full-size through the CLI in test_tabulate_eval_cli.cpp) must have every cell above the horizon valid (finite and non-negative: tabulate refuses
-// non-finite values and stores negative ones as "not measured"). A file that is not supported yet
-// (low2012-microfacet-E2 until the Löw microfacet model lands) is skipped with a printed reason
-// and included automatically once PublishedFits::supported() is true.
+// (a rough one, pink-felt, is tabulated full-size through the CLI in test_tabulate_eval_cli.cpp)
+// must have every cell above the horizon valid (finite and non-negative: tabulate refuses
+// non-finite values and stores negative ones as "not measured"). A file that is not supported
+// is skipped with a printed reason.
+//
+// Values, not only their sign: on every 61st of those cells, for every material of Löw's files,
+// brdfkit's ρ equals the file's own `conventions` formula evaluated from its JSON
+// (support/published_conventions.h; Bagher's file is compared near normal incidence in
+// tests/models/test_published_fits.cpp), and the full-size table holds brdfkit's ρ at the cell
+// centres (the table stores ρ/scale, so to rounding).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_tabulate.h"
 #include "brdfkit/models/published_fits.h"
+#include "support/published_conventions.h"
 #include "support/test_util.h"
 
 namespace brdfkit {
@@ -39,6 +47,28 @@ std::vector<merl::Cell> sparse_cells() {
     for (int b : td)
       for (int c : pd) cells.push_back({a, b, c});
   return cells;
+}
+
+nlohmann::json file_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+// Largest relative difference between brdfkit's ρ and the file's conventions formula at every
+// 61st cell of `cells`; −1 when the file's lobe has no formula in support/published_conventions.h.
+double worst_against_conventions(const Brdf& b, const nlohmann::json& lobes, const std::vector<merl::Cell>& cells,
+                                 size_t& compared) {
+  double worst = 0;
+  for (size_t i = 0; i < cells.size(); i += 61) {
+    Vec3d wi, wo;
+    if (!merl::cell_directions(cells[i], wi, wo)) continue;
+    const auto want = test::low2012_conventions_rho(lobes, wi, wo);
+    if (!want) return -1;
+    const Rgb got = b.eval(wi, wo);
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] - (*want)[c]) / std::max((*want)[c], 1e-300));
+    ++compared;
+  }
+  return worst;
 }
 
 size_t cells_above_horizon() {
@@ -65,8 +95,16 @@ TEST(PublishedTabulation, EveryMaterialOfEverySupportedFileIsFiniteAndNonNegativ
     double lo = std::numeric_limits<double>::infinity(), hi = 0;
     const auto materials = fits.materials();
     EXPECT_EQ(materials.size(), 100u) << fits.stem();
+    const nlohmann::json doc = file_json(file);
+    double worst = 0;
+    size_t compared = 0;
     for (const auto& mat : materials) {
       const Brdf b = fits.brdf(mat);
+      const double w = worst_against_conventions(b, doc["materials"][mat], cells, compared);
+      if (w >= 0) {
+        EXPECT_LE(w, 1e-12) << fits.stem() << " " << mat;
+      }
+      worst = w < 0 ? w : std::max(worst, w);
       for (const auto& c : cells) {
         Vec3d wi, wo;
         if (!merl::cell_directions(c, wi, wo)) continue;
@@ -83,9 +121,17 @@ TEST(PublishedTabulation, EveryMaterialOfEverySupportedFileIsFiniteAndNonNegativ
       }
     }
     EXPECT_EQ(bad, 0u) << fits.stem();
-    std::printf("%s -> %s: %zu materials x %zu cells evaluated, %zu not finite or negative, rho in [%.3g, %.4g]\n",
+    std::printf("%s -> %s: %zu materials x %zu cells evaluated, %zu not finite or negative, rho in [%.3g, %.4g]; ",
                 fits.stem().c_str(), fits.model_name().c_str(), materials.size(), evaluated / materials.size(), bad,
                 lo, hi);
+    if (worst < 0)
+      std::printf("no conventions formula here\n");
+    else
+      std::printf("%zu (material, cell) pairs against the conventions formula, worst relative difference %.3g\n",
+                  compared, worst);
+    if (fits.stem().rfind("low2012", 0) == 0) {
+      EXPECT_GT(compared, 2000u) << fits.stem();
+    }
   }
   EXPECT_GE(files, 6);  // bagher2012-sgd, low2012 smooth, 2 × Ashikhmin-Shirley, 2 × Cook-Torrance
 }
@@ -100,7 +146,16 @@ TEST(PublishedTabulation, FullSizeTableOfTheSharpestMaterial) {
       const Brdf b = fits.brdf(mat);
       const merl::Table t = merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return b.eval(wi, wo); });
       EXPECT_EQ(t.valid_count(), above) << fits.stem() << " " << mat << ": cells negative (stored as not measured)";
-      std::printf("%s %s: %zu of %zu cells valid\n", fits.stem().c_str(), mat, t.valid_count(), above);
+      double worst = 0;
+      for (size_t k = 0; k < merl::kCellCount; k += 997) {
+        Vec3d wi, wo;
+        if (!merl::cell_directions(merl::cell_at(k), wi, wo)) continue;
+        const Rgb want = b.eval(wi, wo), got = t.value(k);
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] - want[c]) / std::max(want[c], 1e-300));
+      }
+      EXPECT_LE(worst, 1e-14) << fits.stem() << " " << mat;
+      std::printf("%s %s: %zu of %zu cells valid; every 997th cell equals rho at its centre to %.2g\n",
+                  fits.stem().c_str(), mat, t.valid_count(), above, worst);
     }
   }
 }

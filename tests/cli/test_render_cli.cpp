@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/render/image_io.h"
+#include "support/output_lines.h"
 #include "support/test_util.h"
 
 namespace brdfkit {
@@ -39,7 +40,15 @@ TEST(RenderCli, MeasuredBesideItsModel) {
   const render::Rgb8Image panel = render::read_png(dir / "out" / "p.png");
   EXPECT_EQ(panel.width, 48);   // two columns
   EXPECT_EQ(panel.height, 72);  // renders, sMAPE, ΔE
-  EXPECT_NE(r.out.find("image RMSE"), std::string::npos) << r.out;
+  // The fit's row of the printed table, led by its label, with the JSON's numbers.
+  const auto row = test::line_led_by(r.out, "cook-torrance-ggx");
+  ASSERT_TRUE(row) << r.out;
+  const auto t = test::tokens_of(*row);
+  ASSERT_EQ(t.size(), 10u) << *row;
+  EXPECT_EQ(t[1] + " " + t[2], "image RMSE") << *row;
+  EXPECT_NEAR(std::stod(t[3]), rmse, 5e-7 + 1e-4 * rmse) << *row;
+  EXPECT_EQ(t[4] + " " + t[5], "mean sMAPE") << *row;
+  EXPECT_NEAR(std::stod(t[6]), smape, 5e-5) << *row;
   std::printf("render: tabulated GGX vs GGX at 24 px, 16 spp: image RMSE %.4g, mean sMAPE %.4f\n", rmse, smape);
   fs::remove_all(dir);
 }

@@ -15,6 +15,7 @@
 #include "brdfkit/fit/param_source.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/models/published_fits.h"
+#include "support/output_lines.h"
 #include "support/test_util.h"
 
 namespace brdfkit {
@@ -64,7 +65,8 @@ TEST(TabulateCli, PublishedFitThenInfo) {
   const auto r = test::run_cli("tabulate --params " + published("bagher2012-sgd").string() +
                                " --material pink-felt -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("cook-torrance-sgd-bagher2012"), std::string::npos) << r.out;
+  EXPECT_EQ(test::lines_of(r.out).at(0), "wrote " + out.string() + ": cook-torrance-sgd-bagher2012 (material pink-felt)")
+      << r.out;
   ASSERT_EQ(fs::file_size(out), merl::kFileBytes);
   const Brdf b = PublishedFits::read(published("bagher2012-sgd")).brdf("pink-felt");
   const merl::Table t = merl::read(out);

@@ -12,6 +12,7 @@
 #include "brdfkit/models/holzschuch_pacanowski.h"
 #include "brdfkit/models/low_microfacet.h"
 #include "support/mc_albedo.h"
+#include "support/output_lines.h"
 #include "support/low_hp_cases.h"
 #include "support/test_util.h"
 
@@ -224,14 +225,22 @@ TEST(LowHp, AlbedoFiniteAtParameterBounds) {
 TEST(LowHp, CliModelsAndCheck) {
   const auto models = test::run_cli("models");
   ASSERT_EQ(models.exit_code, 0) << models.err;
-  EXPECT_NE(models.out.find("low-microfacet"), std::string::npos);
-  EXPECT_NE(models.out.find("holzschuch-pacanowski"), std::string::npos);
+  // Each model is a line led by its name and a dash ("low-microfacet" alone would also match
+  // "low-microfacet-…" names or the published-fits notes).
+  for (const char* name : {"low-microfacet", "holzschuch-pacanowski"}) {
+    const auto line = test::line_led_by(models.out, name);
+    ASSERT_TRUE(line) << name << "\n" << models.out;
+    const auto t = test::tokens_of(*line);
+    EXPECT_EQ(t.size() > 1 ? t[1] : "", "—") << *line;
+  }
   // `check holzschuch-pacanowski` passes too (normalization 1.00000000, reciprocity 0, χ² pass at
   // 0/45/85°) but costs ~28 s of CPU (albedo quadrature over the tabulated G1): run by hand, not here.
   for (const std::string args : {"check low-microfacet --samples 20000 --theta-o 45"}) {
     const auto r = test::run_cli(args);
     EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.out << r.err;
-    EXPECT_NE(r.out.find("all checks passed"), std::string::npos) << args << "\n" << r.out;
+    const auto lines = test::lines_of(r.out);
+    ASSERT_FALSE(lines.empty()) << args;
+    EXPECT_EQ(lines.back(), "all checks passed") << args << "\n" << r.out;
   }
   const auto bad = test::run_cli("check holzschuch-pacanowski --param nosuch=1");
   EXPECT_EQ(bad.exit_code, 2) << bad.out << bad.err;

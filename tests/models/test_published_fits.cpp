@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -193,6 +196,64 @@ TEST(PublishedFits, UnsupportedAndBadInputAreClearErrors) {
     EXPECT_NE(std::string(e.what()).find("'C'"), std::string::npos) << e.what();
   }
   std::filesystem::remove_all(dir);
+}
+
+// The files' diffuse albedo is the directional albedo of the model with its specular lobe off,
+// at any angle (Lambert: a = kd exactly; a factor π in the "albedo/π" convention would show).
+TEST(PublishedFits, DiffuseAlbedoIsTheFilesLambertianAlbedo) {
+  BRDFKIT_REQUIRE_DATA("published-fits");
+  int checked = 0;
+  for (const auto& path : published_fit_files(fits_dir())) {
+    const auto fits = PublishedFits::read(path);
+    ASSERT_TRUE(fits.supported()) << fits.stem() << ": " << fits.unsupported_reason();
+    for (const std::string mat : {"alum-bronze", "steel", "pink-felt", "white-acrylic"}) {
+      const Brdf b = fits.brdf(mat);
+      const ParamTable& t = b.model().params();
+      ParamValues diffuse = b.values();
+      for (size_t i = 0; i < t.size(); ++i)
+        if (t[i].linear && t[i].name != "kd")
+          for (auto& ch : diffuse.values) ch[i] = 0.0;
+      const auto kd = lobe_params(path.filename().string(), mat, "Lambertian")["albedo"];
+      for (int c = 0; c < 3; ++c)
+        for (double deg : {0.0, 60.0}) {
+          const double a = test::mc_albedo(b.model(), diffuse.channel(c), c, deg * kPi / 180, 8);
+          EXPECT_NEAR(a, kd[c].get<double>(), 1e-12) << fits.stem() << " " << mat << " channel " << c << " at " << deg;
+        }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 7 * 4);
+}
+
+// Löw's Ashikhmin-Shirley lobe (n+1)/(8π) cosⁿθh F/((wi·h) max(ci, co)) integrates to ks F(cosθ)
+// as n grows (with dωi = 4 (wo·h) dωh the lobe becomes F (n+1)/(2π) cosⁿθh dωh near the mirror
+// direction, where ci = co): so a(30°) = kd + ks F(cos 30°; fresnelReflectance) for the sharp
+// fits (sharpness ≥ 1000, every material of both files), to O(1/n) and the Monte Carlo noise.
+TEST(PublishedFits, AshikhminShirleyAlbedoIsKdPlusKsFInTheSharpLimit) {
+  BRDFKIT_REQUIRE_DATA("published-fits");
+  const double cos30 = std::cos(30 * kPi / 180);
+  for (const std::string file : {"low2012-ashikhminshirley-E1.json", "low2012-ashikhminshirley-E2.json"}) {
+    const auto fits = PublishedFits::read(fits_dir() / file);
+    double worst = 0;
+    int sharp = 0;
+    for (const auto& mat : fits.materials()) {
+      const auto p = lobe_params(file, mat, "LowAshikhminShirley");
+      if (p["sharpness"].get<double>() < 1000) continue;
+      ++sharp;
+      const auto kd = lobe_params(file, mat, "Lambertian")["albedo"];
+      const Brdf b = fits.brdf(mat);
+      for (int c = 0; c < 3; ++c) {
+        const double want =
+            kd[c].get<double>() + p["albedo"][c].get<double>() * ct_fresnel(cos30, p["fresnelReflectance"].get<double>());
+        const double got = test::mc_albedo(b.model(), b.values().channel(c), c, 30 * kPi / 180, 32);
+        worst = std::max(worst, std::abs(got - want) / want);
+        EXPECT_NEAR(got, want, 0.02 * want) << file << " " << mat << " channel " << c;
+      }
+    }
+    std::printf("%s: %d sharp fits, a(30 deg) vs kd + ks F(cos 30 deg): worst relative difference %.3g\n", file.c_str(),
+                sharp, worst);
+    EXPECT_GT(sharp, 20);
+  }
 }
 
 // Directional albedo at θi = 30° (luminance) of every material in every loadable file: the

@@ -53,7 +53,9 @@ TEST(ImageIo, PngRoundTripsAndToneMapIsSrgb) {
   EXPECT_EQ(back.rgb, t.rgb);
   std::ifstream in(dir / "a.png", std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(bytes.find("exposure"), std::string::npos);
+  // The whole tEXt chunk: length 13, type, keyword "exposure", NUL, the text.
+  const std::string chunk("\0\0\0\x0dtEXtexposure\0" "0 EV", 21);
+  EXPECT_NE(bytes.find(chunk), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

@@ -13,6 +13,7 @@
 #include "brdfkit/models/model_sets.h"
 #include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/load.h"
+#include "support/output_lines.h"
 #include "support/test_util.h"
 
 namespace brdfkit::fit {
@@ -67,7 +68,7 @@ TEST(FitStarts, CliReportsTheScanInTheConsoleAndTheJson) {
   const std::string out = (dir / "fit.json").string();
   const test::CliResult r = test::run_cli("fit " + cornell("krylon_blue.brdf") + " --model ward --report ngan -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("start 0 = best of 13 scan points"), std::string::npos) << r.out;
+  EXPECT_TRUE(test::has_line(r.out, "  step     start 0 = best of 13 scan points (fit/engine/start_scan.h)")) << r.out;
   const test::CliResult j =
       test::run_cli("fit " + cornell("krylon_blue.brdf") + " --model ward --report ngan --json -o " + out);
   ASSERT_EQ(j.exit_code, 0) << j.err;

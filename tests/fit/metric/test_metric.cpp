@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/models/lambert.h"
@@ -41,6 +43,45 @@ TEST(Metric, NganOfAConstantDifferenceIsClosedForm) {
   const double got = m.value(p.model, p.fitted);
   EXPECT_NEAR(got, expected, expected * 1e-4) << got << " vs " << expected;
   EXPECT_EQ(m.value(p.model, p.measured), 0.0);
+}
+
+// A Lambertian measured only for θi ≤ 40° (θo over the whole hemisphere): the domain is no longer
+// symmetric in θi and θo, so the cosθi factor of Eq. 1 is told apart from a cosθo one.
+class MeasuredBelowIncidence final : public MeasuredBrdf {
+ public:
+  MeasuredBelowIncidence(const Model& model, ParamValues values, double max_theta_i)
+      : brdf_(model, std::move(values)), min_cos_i_(std::cos(max_theta_i)) {}
+  std::string format() const override { return "analytic"; }
+  std::string path() const override { return "analytic:lambert, theta_i <= 40 deg"; }
+  std::string dimensions() const override { return "continuous"; }
+  std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const override {
+    if (!(wi.z() >= min_cos_i_ && wo.z() > 0)) return std::nullopt;
+    return brdf_.eval(wi, wo);
+  }
+  SampleSet samples() const override { return {}; }
+
+ private:
+  Brdf brdf_;
+  double min_cos_i_;
+};
+
+// ngan on that domain: the θi sum stops at 40° while the θo sum still runs to 80°, so
+// E = d · sqrt((1 − c³)/(3 (1 − c))) with c = cos 40° (the θi bound), over the max albedo, which
+// the rows θi ≤ 40° still reach (θo covers the hemisphere). With cosθo in place of cosθi the
+// bound would be θo's 80° instead: 0.633 d against 0.886 d here.
+TEST(Metric, NganOnADomainAsymmetricInThetaIAndThetaO) {
+  LambertPair p;
+  const MeasuredBelowIncidence data(p.model, p.measured, 40 * kDeg);
+  const Metric m = make_metric("ngan", data);
+  EXPECT_EQ(m.sample_count(), size_t(40 * 80 * 180));
+  double albedo = 0;
+  for (int b = 0; b < 90; ++b) albedo += 0.5 * std::sin(2 * (b + 0.5) * kDeg) * kDeg;
+  EXPECT_NEAR(m.albedo_norm(), albedo, 1e-12);
+  const double c = std::cos(40 * kDeg);
+  const double expected = p.d * std::sqrt((1 - c * c * c) / (3 * (1 - c))) / albedo;
+  const double got = m.value(p.model, p.fitted);
+  std::printf("ngan, theta_i <= 40 deg: %.8g, closed form %.8g\n", got, expected);
+  EXPECT_NEAR(got, expected, expected * 1e-4) << got << " vs " << expected;
 }
 
 // The same through a MERL-format table (constant: the look-up is exact).

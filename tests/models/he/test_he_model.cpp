@@ -3,6 +3,7 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "brdfkit/models/he_torrance.h"
 #include "brdfkit/ndf/beckmann.h"
 #include "support/mc_albedo.h"
+#include "support/output_lines.h"
 #include "support/test_util.h"
 
 namespace brdfkit {
@@ -206,10 +208,22 @@ TEST(He, AlbedoFiniteAtParameterBounds) {
   std::printf("[ he albedo ] max over bounds (ks = %.0f, kd = 0) %.4f at %s\n", t[1].upper, worst, worst_where.c_str());
 }
 
+// `models` lists He as a line led by its name, followed by one line per parameter of its table.
 TEST(He, ListedByTheCli) {
   const auto r = test::run_cli("models");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("he"), std::string::npos);
+  const auto lines = test::lines_of(r.out);
+  const auto at = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    const auto t = test::tokens_of(l);
+    return t.size() >= 2 && t[0] == "he" && t[1] == "—";
+  });
+  ASSERT_NE(at, lines.end()) << r.out;
+  const ParamTable& table = model().params();
+  ASSERT_GT(size_t(lines.end() - at), table.size()) << "fewer lines than parameters\n" << r.out;
+  for (size_t i = 0; i < table.size(); ++i) {
+    const auto t = test::tokens_of(*(at + 1 + long(i)));
+    EXPECT_EQ(t.empty() ? "" : t[0], table[i].name) << "parameter row " << i;
+  }
 }
 
 }  // namespace
