@@ -1,10 +1,12 @@
 // `brdfkit eval MODEL --wi θ,φ --wo θ,φ` (apps/brdfkit/cmd_eval.cpp, README): --wi is the direction
 // towards the light and --wo towards the viewer, each θ from the normal and φ the azimuth, in
-// degrees unless --radians. Every model of the catalogue is reciprocal, so no value can tell
-// --wi from --wo; what can be pinned is that each option becomes the direction it names (θ and φ
-// in that order, in that unit, on the tangent frame's axes): an anisotropic model at pairs where
-// θ ≠ φ, φ is off the axes and θi ≠ θo, compared with the library's ρ at the directions built
-// here, and against the same pair with θ and φ exchanged or φ measured from the other tangent axis.
+// degrees unless --radians. Every model of the catalogue is reciprocal, so a model's value cannot
+// tell --wi from --wo; a measured RGL file can (its table is conditioned on wi, DESIGN.md §7, and
+// cc_ibiza_sunset is far from reciprocal). For models what is pinned is that each option becomes
+// the direction it names (θ and φ in that order, in that unit, on the tangent frame's axes): an
+// anisotropic model at pairs where θ ≠ φ, φ is off the axes and θi ≠ θo, compared with the
+// library's ρ at the directions built here, and against the same pair with θ and φ exchanged or φ
+// measured from the other tangent axis.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "brdfkit/measured/load.h"
 #include "brdfkit/models/model.h"
 #include "support/test_util.h"
 
@@ -59,6 +62,33 @@ TEST(EvalCliConvention, WiAndWoAreTheDirectionsTheyName) {
     const CliResult rr = run_cli(rad.str());
     ASSERT_EQ(rr.exit_code, 0) << rr.err;
     EXPECT_NEAR(nlohmann::json::parse(rr.out)["rho"][0].get<double>(), want[0], 1e-12 * want[0]);
+  }
+}
+
+// A non-reciprocal measurement: the CLI's value is the data's ρ(wi = --wi, wo = --wo) and differs
+// from the swapped pair by more than 5 % at each of these pairs.
+TEST(EvalCliConvention, MeasuredFileIsAskedWithWiTowardsTheLight) {
+  BRDFKIT_REQUIRE_DATA("rgl");
+  const auto file = data_dir() / "rgl" / "cc_ibiza_sunset_rgb.bsdf";
+  const auto data = load_measured(file);
+  struct Pair { double ti, pi, to, po; };
+  for (Pair p : {Pair{20, 0, 60, 180}, Pair{55, 30, 10, 200}, Pair{70, 90, 35, 250}}) {
+    const std::string args = "eval " + file.string() + " --wi " + std::to_string(p.ti) + "," + std::to_string(p.pi) +
+                             " --wo " + std::to_string(p.to) + "," + std::to_string(p.po) + " --json";
+    const CliResult r = run_cli(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["format"], "rgl");
+    const auto want = data->eval(deg(p.ti, p.pi), deg(p.to, p.po));
+    const auto swapped = data->eval(deg(p.to, p.po), deg(p.ti, p.pi));
+    ASSERT_TRUE(want && swapped);
+    double largest_gap = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double got = j["rho"][size_t(c)].get<double>();
+      EXPECT_NEAR(got, (*want)[c], 1e-12 * std::abs((*want)[c])) << args;
+      largest_gap = std::max(largest_gap, std::abs(got - (*swapped)[c]) / std::abs((*want)[c]));
+    }
+    EXPECT_GT(largest_gap, 0.05) << args << ": the pair does not tell wi from wo";
   }
 }
 
