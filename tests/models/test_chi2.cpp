@@ -1,14 +1,18 @@
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "brdfkit/analysis/chi2_test.h"
 #include "brdfkit/core/warp.h"
 #include "brdfkit/models/cook_torrance_catalogue.h"
 #include "brdfkit/models/model.h"
+#include "brdfkit/models/lobe_mixture.h"
+#include "support/chi2_width.h"
 #include "support/param_sets.h"
 
 using namespace brdfkit;
@@ -124,3 +128,74 @@ TEST(Chi2, FailsWithAWrongJacobian) {
                            o);
   EXPECT_FALSE(r.passed);
 }
+
+// Power of the sampling test: every model's sampler with its lobe 5 % wider than the density it
+// is checked against (tests/support/chi2_width.h) must be rejected, and the model's own sampler,
+// with the same draws, must pass; a sampler or pdf whose width is off by 5 % fails here. The
+// density is scaled by ∫pdf_wide / ∫pdf (the wider lobe loses more below the horizon), so its
+// integral matches the wider sampler's rejections and only the histogram's shape can tell them
+// apart: the integral test must pass. On the lobe alone, at θo = 30°.
+namespace {
+const double kPowerThetaO = 30 * kPi / 180;
+constexpr double kWider = 1.05;
+
+std::string test_name(const testing::TestParamInfo<const Model*>& info) {
+  std::string s(info.param->name());
+  for (char& ch : s)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return s;
+}
+}  // namespace
+
+class Chi2Power : public testing::TestWithParam<const Model*> {};
+
+TEST_P(Chi2Power, RejectsALobe5PercentWider) {
+  const Model& m = *GetParam();
+  const test::PowerCase* pc = test::power_case(m.name());
+  ASSERT_NE(pc, nullptr) << m.name() << ": name its width parameters in tests/support/chi2_width.h";
+  const ParamValues v = test::power_values(m, *pc), w = test::widened(m, *pc, v, kWider);
+  const double *p = v.channel(kChannel), *pw = w.channel(kChannel);
+  const Vec3d wo = spherical_direction(kPowerThetaO, 0.3);
+  const double k = test::widened_cosine_exponent(kWider);  // the Lambertian lobe's control
+  const bool lambertian = pc->width.empty();
+  auto wide_sample = [&](const Vec2d& u, double ul) -> std::optional<Vec3d> {
+    if (lambertian) return lobes::sample_cosine_power(k, u);
+    return m.sample(pw, kChannel, wo, u, ul);
+  };
+  auto wide_pdf = [&](const Vec3d& wi) {
+    return lambertian ? lobes::cosine_power_pdf(k, wi.z()) : m.pdf(pw, kChannel, wo, wi);
+  };
+
+  Chi2Options o;
+  o.samples = pc->draws;
+  o.seed = 30;
+  o.test_count = int(all_models().size());
+  o.quadrature_tol = 1e-6;
+  const Chi2Result genuine = chi2_test(m, p, kChannel, wo, o);
+  EXPECT_TRUE(genuine.passed) << genuine.message;
+  const double scale = test::hemisphere_integral(wide_pdf) / genuine.pdf_integral;
+  const Chi2Result wide =
+      chi2_test(wide_sample, [&](const Vec3d& wi) { return scale * m.pdf(p, kChannel, wo, wi); }, o);
+  const double level = 1 - std::pow(1 - o.significance, 1.0 / o.test_count);
+  EXPECT_TRUE(wide.integral_passed) << "the control must leave the pdf integral consistent: " << wide.message;
+  EXPECT_LT(wide.p_value, level) << "a lobe 5 % wider passes: " << wide.message;
+  std::printf("%-32s %6ld draws: p = %.3g as sampled, %.3g 5 %% wider (level %.3g; integral z %.2f, rejected %.4f)\n",
+              std::string(m.name()).c_str(), pc->draws, genuine.p_value, wide.p_value, level, wide.integral_z,
+              wide.rejected_fraction);
+}
+
+// The models whose sampler costs ~1 ms a draw (test::PowerCase::slow_sampler) run on request:
+//   brdfkit_models_tests --gtest_also_run_disabled_tests --gtest_filter='*SlowSamplers/Chi2Power*'
+// (their own samplers are also checked by Chi2.EveryRegisteredModelSamplesItsPdf).
+namespace {
+std::vector<const Model*> power_models(bool slow) {
+  std::vector<const Model*> out;
+  for (const Model* m : all_models()) {
+    const test::PowerCase* pc = test::power_case(m->name());
+    if ((pc && pc->slow_sampler) == slow) out.push_back(m);
+  }
+  return out;
+}
+}  // namespace
+INSTANTIATE_TEST_SUITE_P(EveryModel, Chi2Power, testing::ValuesIn(power_models(false)), test_name);
+INSTANTIATE_TEST_SUITE_P(DISABLED_SlowSamplers, Chi2Power, testing::ValuesIn(power_models(true)), test_name);
