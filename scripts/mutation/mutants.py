@@ -19,6 +19,7 @@ METRIC = "brdfkit_fit_metric_tests"
 PROCEDURE = "brdfkit_fit_procedure_tests"
 CONVENTIONS = "brdfkit_conventions_tests"
 CLI = "brdfkit_cli_tests"
+EXPORT = "brdfkit_export_tests"
 
 MUTANTS = [
     # --- models ---------------------------------------------------------------------------
@@ -148,7 +149,7 @@ MUTANTS = [
         "bug": "glTF ior default 1.5 -> 1.4 (KHR_materials_ior's default is 1.5)",
         "edits": [("src/brdfkit/models/gltf_metallic_roughness.h", '{"ior", 1.0, 5.0, 1.5, Scope::Shared',
                    '{"ior", 1.0, 5.0, 1.4, Scope::Shared')],
-        "quick": [(REF, "RendererModelsReference.Gltf*"), (RENDERER, "RendererReference.Gltf")],
+        "quick": [(EXPORT, "ExportFiles.GltfWithoutExtensionsReadsWithTheirDefaults")],
     },
     {
         "id": "disney-fd90",
@@ -171,7 +172,7 @@ MUTANTS = [
         "family": "reader/merl",
         "bug": "MERL blue scale 1.66/1500 -> 1.5/1500",
         "edits": [("src/brdfkit/measured/merl.h", "1.66 / 1500.0}", "1.5 / 1500.0}")],
-        "quick": [(MEASURED, "Merl*")],
+        "quick": [(MEASURED, "MerlFile.HandWrittenFileReadsWithTheReferenceChannelScales")],
     },
     {
         "id": "merl-theta-d-off-by-one",

@@ -29,6 +29,7 @@ import filecmp
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -293,6 +294,10 @@ def main():
     selected = [m for m in MUTANTS if not args.ids or m["id"] in args.ids]
     check_mutants(selected)
 
+    # A TERM or HUP unwinds like an exception, so run_mutant restores the mutated files (a killed
+    # run also leaves nothing behind: the next run's sync copies every differing file back).
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(sig, lambda signum, frame: sys.exit(128 + signum))
     args.scratch.mkdir(parents=True, exist_ok=True)
     log_file = args.scratch / "mutation.log"
     log_file.write_text("")

@@ -4,8 +4,7 @@
 // test_render_cli.cpp, test_export_cli.cpp, test_convert_ndf_cli.cpp, tests/analysis/,
 // tests/fit/batch/, tests/report/). Inputs are tiny (8-pixel renders, coarse metric grids) to keep
 // the file short; data from ../shared/data are skipped with a printed reason when absent.
-// Not here: `export --material`, whose only inputs (published fits) are always refitted into the
-// target's model on the full MERL grid (~70 s of CPU a material).
+// `export --material` is in test_export_cli.cpp (its inputs, published fits, are always refitted).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,8 +3,13 @@
 // one-line message with exit code 2 and no file written.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "brdfkit/analysis/model_checks.h"
+#include "brdfkit/core/vec.h"
 #include "brdfkit/export/gltf_material.h"
 #include "brdfkit/fit/fit_record.h"
+#include "brdfkit/fit/param_source.h"
 #include "support/output_lines.h"
 #include "support/test_util.h"
 
@@ -39,6 +44,28 @@ TEST(ExportCli, OwnModelExportsExactlyAndReadsBack) {
   const auto m = test::run_cli("export " + mitsuba.string() + " --to mitsuba3 -o " + (dir / "m.xml").string());
   EXPECT_EQ(m.exit_code, 0) << m.err;
   EXPECT_TRUE(fs::exists(dir / "m_scene.xml"));
+  fs::remove_all(dir);
+}
+
+// --material picks the published fit that is refitted into the target's model: the exported glTF
+// material's albedo at θi = 30° is pink-felt's (a diffuse red-dominant felt), not alum-bronze's.
+// One refit on the full MERL grid (~10 s).
+TEST(ExportCli, MaterialChoosesThePublishedFitThatIsRefitted) {
+  BRDFKIT_REQUIRE_DATA("published-fits/bagher2012-sgd.json");
+  const fs::path dir = test::scratch_dir("export_cli_material");
+  const fs::path published = test::data_dir() / "published-fits/bagher2012-sgd.json";
+  const auto r = test::run_cli("export " + published.string() + " --material pink-felt --to gltf -o " +
+                               (dir / "pink.gltf").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Brdf gltf(model_by_name("gltf-metallic-roughness"), exporter::read_gltf_material(dir / "pink.gltf"));
+  const Brdf pink = fit::load_params_file(published, "pink-felt"), bronze = fit::load_params_file(published, "alum-bronze");
+  auto albedo30 = [](const Brdf& b, int c) { return albedo(b.model(), b.values().channel(c), c, 30 * kPi / 180, 1e-4); };
+  for (int c = 0; c < 3; ++c) {
+    const double a = albedo30(gltf, c), want = albedo30(pink, c), other = albedo30(bronze, c);
+    std::printf("channel %d: albedo(30°) exported %.4f, pink-felt %.4f, alum-bronze %.4f\n", c, a, want, other);
+    EXPECT_NEAR(a / want, 1.0, 0.05) << "channel " << c;
+    EXPECT_GT(std::abs(a / other - 1.0), 0.3) << "channel " << c;
+  }
   fs::remove_all(dir);
 }
 

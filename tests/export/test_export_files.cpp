@@ -93,6 +93,26 @@ TEST(ExportFiles, GltfReadsBackAndValidates) {
   EXPECT_EQ(report_json["numWarnings"], 0) << issues;
 }
 
+// A material without KHR_materials_ior or KHR_materials_specular reads with those extensions'
+// defaults (KHR_materials_ior README: "ior ... default 1.5"; KHR_materials_specular README:
+// specularFactor 1, specularColorFactor [1, 1, 1]), so its dielectric F0 is 0.04.
+TEST(ExportFiles, GltfWithoutExtensionsReadsWithTheirDefaults) {
+  const fs::path f = temp_dir() / "plain.gltf";
+  std::ofstream(f) << R"({"asset": {"version": "2.0"}, "materials": [{"pbrMetallicRoughness":
+      {"baseColorFactor": [0.5, 0.25, 0.125, 1], "metallicFactor": 0.25, "roughnessFactor": 0.75}}]})";
+  const ParamValues v = exporter::read_gltf_material(f);
+  const ParamTable t = model_by_name("gltf-metallic-roughness").params();
+  auto get = [&](const char* name, int c) { return v.values[size_t(c)][size_t(find_param(t, name))]; };
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(get("ior", c), 1.5) << "channel " << c;
+    EXPECT_EQ(get("specular", c), 1.0) << "channel " << c;
+    EXPECT_EQ(get("specular_color", c), 1.0) << "channel " << c;
+    EXPECT_EQ(get("base_color", c), 0.5 / (1 << c)) << "channel " << c;
+    EXPECT_EQ(get("metallic", c), 0.25) << "channel " << c;
+    EXPECT_EQ(get("roughness", c), 0.75) << "channel " << c;
+  }
+}
+
 // name → values of the renderer's attributes in a Mitsuba XML or pbrt file.
 std::vector<double> numbers_of(const std::string& text, const std::string& pattern) {
   std::smatch m;

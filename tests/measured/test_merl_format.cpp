@@ -238,6 +238,28 @@ TEST(MerlFile, RoundTripIsBitIdentical) {
   std::filesystem::remove_all(dir);
 }
 
+// A file written byte by byte (header 90 90 180, then the R, G and B blocks of doubles) reads
+// with the reference reader's channel scales, written here as MERL's BRDFRead.cpp defines them:
+// RED_SCALE 1.0/1500, GREEN_SCALE 1.15/1500, BLUE_SCALE 1.66/1500.
+TEST(MerlFile, HandWrittenFileReadsWithTheReferenceChannelScales) {
+  const auto dir = test::scratch_dir("merl_scales");
+  std::string bytes(merl::kFileBytes, '\0');
+  const std::int32_t dims[3] = {90, 90, 180};
+  std::memcpy(bytes.data(), dims, sizeof dims);
+  const double raw[3] = {1500.0, 3000.0, 750.0};
+  for (int c = 0; c < 3; ++c)
+    for (size_t k = 0; k < merl::kCellCount; ++k)
+      std::memcpy(bytes.data() + 12 + 8 * (size_t(c) * merl::kCellCount + k), &raw[c], sizeof(double));
+  std::ofstream(dir / "hand.binary", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  const merl::Table t = merl::read(dir / "hand.binary");
+  const auto v = t.lookup(20 * kDeg, 30 * kDeg, 40 * kDeg);
+  ASSERT_TRUE(v.has_value());
+  EXPECT_DOUBLE_EQ((*v)[0], 1.0);
+  EXPECT_DOUBLE_EQ((*v)[1], 2.0 * 1.15);
+  EXPECT_DOUBLE_EQ((*v)[2], 0.5 * 1.66);
+  std::filesystem::remove_all(dir);
+}
+
 // Raw stored value of each cell = 1 + 2 iθh + 3 iθd + 0.5 iφd (affine in the index): trilinear
 // look-up reproduces the affine function at any point between centres, and the φd axis wraps.
 TEST(MerlLookup, TrilinearIsExactForAffineTables) {
