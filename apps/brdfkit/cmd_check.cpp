@@ -39,32 +39,15 @@ struct CheckOptions {
   bool json = false;
 };
 
-int run_check(const CheckOptions& o) {
-  const Model& model = model_by_name(o.model);
-  const ParamTable& table = model.params();
-  const ParamValues values = fit::params_from_args(table, o.params);
-  if (o.samples < kMinSamples || o.samples > kMaxSamples)
-    throw InputError("--samples", fmt::format("must be in [{}, {}] (got {})", kMinSamples, kMaxSamples, o.samples));
-  for (double t : o.theta_o_deg)
-    if (!(t >= 0 && t < 90)) throw InputError("--theta-o", fmt::format("{:g} is not in [0, 90) degrees", t));
+// ∫ D cos dω of the model's distribution, or null for a model without one; shape parameters are
+// shared, so channel 0 stands for all.
+nlohmann::json normalization_json(const Model& model, const ParamValues& values) {
+  const auto* view = dynamic_cast<const MicrofacetDistributionView*>(&model);
+  if (!view) return nullptr;
+  return ndf_normalization([&](double c) { return view->ndf(values.channel(0), c); });
+}
 
-  nlohmann::json out;
-  out["model"] = model.name();
-  nlohmann::json pj = nlohmann::json::object();
-  for (size_t i = 0; i < table.size(); ++i)
-    pj[table[i].name] = {values.values[0][i], values.values[1][i], values.values[2][i]};
-  out["params"] = pj;
-  bool passed = true;
-
-  // Normalization of the distribution (shape parameters are shared: channel 0 stands for all).
-  if (const auto* view = dynamic_cast<const MicrofacetDistributionView*>(&model)) {
-    const double norm = ndf_normalization([&](double c) { return view->ndf(values.channel(0), c); });
-    out["normalization"] = norm;
-    if (!(std::abs(norm - 1) < 1e-3)) passed = false;
-  } else {
-    out["normalization"] = nullptr;
-  }
-
+nlohmann::json reciprocity_json(const Model& model, const ParamValues& values) {
   double worst = 0;
   int pairs = 0;
   for (int c = 0; c < 3; ++c) {
@@ -72,17 +55,20 @@ int run_check(const CheckOptions& o) {
     worst = std::max(worst, r.max_relative_error);
     pairs += r.pairs;
   }
-  out["reciprocity"] = {{"max_relative_error", worst}, {"pairs", pairs}, {"reciprocal", model.reciprocal()}};
-  if (model.reciprocal() && !(worst < 1e-8)) passed = false;
+  return {{"max_relative_error", worst}, {"pairs", pairs}, {"reciprocal", model.reciprocal()}};
+}
 
+nlohmann::json albedo_json(const Model& model, const ParamValues& values) {
   nlohmann::json alb = nlohmann::json::array();
   for (double t : albedo_angles_deg()) {
     nlohmann::json rgb = nlohmann::json::array();
     for (int c = 0; c < 3; ++c) rgb.push_back(albedo(model, values.channel(c), c, t * kPi / 180));
     alb.push_back({{"theta_i_deg", t}, {"rgb", rgb}});
   }
-  out["albedo"] = alb;
+  return alb;
+}
 
+nlohmann::json chi2_json(const Model& model, const ParamValues& values, const CheckOptions& o) {
   nlohmann::json chi = nlohmann::json::array();
   Chi2Options co;
   co.samples = o.samples;
@@ -101,38 +87,71 @@ int run_check(const CheckOptions& o) {
                    {"integral_z", r.integral_z},
                    {"passed", r.passed},
                    {"message", r.message}});
-    if (!r.passed) passed = false;
   }
-  out["chi2"] = chi;
-  out["passed"] = passed;
+  return chi;
+}
 
-  if (o.json) {
+// Every check as the JSON that --json prints; "passed" is false when one fails.
+nlohmann::json checks_json(const Model& model, const ParamValues& values, const CheckOptions& o) {
+  const ParamTable& table = model.params();
+  nlohmann::json out;
+  out["model"] = model.name();
+  nlohmann::json pj = nlohmann::json::object();
+  for (size_t i = 0; i < table.size(); ++i)
+    pj[table[i].name] = {values.values[0][i], values.values[1][i], values.values[2][i]};
+  out["params"] = pj;
+  out["normalization"] = normalization_json(model, values);
+  out["reciprocity"] = reciprocity_json(model, values);
+  out["albedo"] = albedo_json(model, values);
+  out["chi2"] = chi2_json(model, values, o);
+  bool passed = out["normalization"].is_null() || std::abs(out["normalization"].get<double>() - 1) < 1e-3;
+  if (model.reciprocal() && !(out["reciprocity"]["max_relative_error"].get<double>() < 1e-8)) passed = false;
+  for (const auto& r : out["chi2"])
+    if (!r["passed"].get<bool>()) passed = false;
+  out["passed"] = passed;
+  return out;
+}
+
+void print_checks(const nlohmann::json& out, const Model& model, const ParamValues& values, const CheckOptions& o) {
+  const ParamTable& table = model.params();
+  std::cout << fmt::format("{}  ({} samples per chi2 test, seed {})\n", model.name(), o.samples, o.seed);
+  for (size_t i = 0; i < table.size(); ++i)
+    std::cout << fmt::format("  {:<8} {:g} {:g} {:g}\n", table[i].name, values.values[0][i], values.values[1][i],
+                             values.values[2][i]);
+  if (out["normalization"].is_null())
+    std::cout << "normalization  (no microfacet distribution)\n";
+  else
+    std::cout << fmt::format("normalization  int D cos dw = {:.8f}\n", out["normalization"].get<double>());
+  const auto& rec = out["reciprocity"];
+  std::cout << fmt::format("reciprocity    max relative error {:.3g} over {} pairs{}\n", rec["max_relative_error"].get<double>(),
+                           rec["pairs"].get<int>(), model.reciprocal() ? "" : " (model not reciprocal)");
+  std::cout << "albedo         theta_i      R          G          B\n";
+  for (const auto& a : out["albedo"])
+    std::cout << fmt::format("               {:5.0f}   {:9.6f}  {:9.6f}  {:9.6f}\n", a["theta_i_deg"].get<double>(),
+                             a["rgb"][0].get<double>(), a["rgb"][1].get<double>(), a["rgb"][2].get<double>());
+  std::cout << "sampling       theta_o   chi2      dof   p-value    int pdf    rejected  result\n";
+  for (const auto& r : out["chi2"])
+    std::cout << fmt::format("               {:5.0f}   {:9.2f} {:5d}   {:8.4f}   {:.6f}   {:.6f}  {}{}\n",
+                             r["theta_o_deg"].get<double>(), r["statistic"].get<double>(), r["dof"].get<int>(),
+                             r["p_value"].get<double>(), r["pdf_integral"].get<double>(),
+                             r["rejected_fraction"].get<double>(), r["passed"].get<bool>() ? "pass" : "FAIL ",
+                             r["message"].get<std::string>());
+  std::cout << (out["passed"].get<bool>() ? "all checks passed\n" : "some checks FAILED\n");
+}
+
+int run_check(const CheckOptions& o) {
+  const Model& model = model_by_name(o.model);
+  const ParamValues values = fit::params_from_args(model.params(), o.params);
+  if (o.samples < kMinSamples || o.samples > kMaxSamples)
+    throw InputError("--samples", fmt::format("must be in [{}, {}] (got {})", kMinSamples, kMaxSamples, o.samples));
+  for (double t : o.theta_o_deg)
+    if (!(t >= 0 && t < 90)) throw InputError("--theta-o", fmt::format("{:g} is not in [0, 90) degrees", t));
+  const nlohmann::json out = checks_json(model, values, o);
+  if (o.json)
     std::cout << json_text(out) << "\n";
-  } else {
-    std::cout << fmt::format("{}  ({} samples per chi2 test, seed {})\n", model.name(), o.samples, o.seed);
-    for (size_t i = 0; i < table.size(); ++i)
-      std::cout << fmt::format("  {:<8} {:g} {:g} {:g}\n", table[i].name, values.values[0][i], values.values[1][i],
-                               values.values[2][i]);
-    if (out["normalization"].is_null())
-      std::cout << "normalization  (no microfacet distribution)\n";
-    else
-      std::cout << fmt::format("normalization  int D cos dw = {:.8f}\n", out["normalization"].get<double>());
-    std::cout << fmt::format("reciprocity    max relative error {:.3g} over {} pairs{}\n", worst, pairs,
-                             model.reciprocal() ? "" : " (model not reciprocal)");
-    std::cout << "albedo         theta_i      R          G          B\n";
-    for (const auto& a : alb)
-      std::cout << fmt::format("               {:5.0f}   {:9.6f}  {:9.6f}  {:9.6f}\n", a["theta_i_deg"].get<double>(),
-                               a["rgb"][0].get<double>(), a["rgb"][1].get<double>(), a["rgb"][2].get<double>());
-    std::cout << "sampling       theta_o   chi2      dof   p-value    int pdf    rejected  result\n";
-    for (const auto& r : chi)
-      std::cout << fmt::format("               {:5.0f}   {:9.2f} {:5d}   {:8.4f}   {:.6f}   {:.6f}  {}{}\n",
-                               r["theta_o_deg"].get<double>(), r["statistic"].get<double>(), r["dof"].get<int>(),
-                               r["p_value"].get<double>(), r["pdf_integral"].get<double>(),
-                               r["rejected_fraction"].get<double>(), r["passed"].get<bool>() ? "pass" : "FAIL ",
-                               r["message"].get<std::string>());
-    std::cout << (passed ? "all checks passed\n" : "some checks FAILED\n");
-  }
-  return passed ? 0 : kChecksFailed;
+  else
+    print_checks(out, model, values, o);
+  return out["passed"].get<bool>() ? 0 : kChecksFailed;
 }
 
 const CommandRegistration reg("check", [](CLI::App& app) {

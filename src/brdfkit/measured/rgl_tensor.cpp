@@ -215,20 +215,18 @@ double elevation(const Vec3d& d) {
   return 2 * std::asin(std::min(1.0, 0.5 * dist));
 }
 
-}  // namespace
-
-RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(path_, "cannot open file");
-  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  Reader r(bytes, path_);
+// The header and field table of a tensor_file (Dupuy & Jakob 2018's format, Mitsuba 3
+// src/core/tensor.cpp): magic, version 1.0, then per field its name, rank, type, offset and shape,
+// each field's data checked to lie inside the file.
+std::map<std::string, Field> read_fields(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+  Reader r(bytes, path);
   const std::string magic = r.bytes(12);
   if (std::memcmp(magic.data(), "tensor_file\0", 12) != 0)
-    throw InputError(path_, "not an RGL tensor_file (bad magic; expected \"tensor_file\\0\")");
+    throw InputError(path, "not an RGL tensor_file (bad magic; expected \"tensor_file\\0\")");
   const int major = r.get<std::uint8_t>(), minor = r.get<std::uint8_t>();
-  if (major != 1 || minor != 0) throw InputError(path_, fmt::format("unsupported tensor_file version {}.{} (expected 1.0)", major, minor));
+  if (major != 1 || minor != 0) throw InputError(path, fmt::format("unsupported tensor_file version {}.{} (expected 1.0)", major, minor));
   const std::uint32_t n_fields = r.get<std::uint32_t>();
-  if (n_fields > 1000) throw InputError(path_, fmt::format("implausible field count {}", n_fields));
+  if (n_fields > 1000) throw InputError(path, fmt::format("implausible field count {}", n_fields));
   std::map<std::string, Field> fields;
   for (std::uint32_t k = 0; k < n_fields; ++k) {
     const std::string name = r.bytes(r.get<std::uint16_t>());
@@ -238,23 +236,89 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     f.offset = r.get<std::uint64_t>();
     for (std::uint16_t d = 0; d < ndim; ++d) f.shape.push_back(r.get<std::uint64_t>());
     const size_t ts = type_size(f.type);
-    if (ts == 0) throw InputError(path_, fmt::format("field '{}': unknown type code {}", name, f.type));
+    if (ts == 0) throw InputError(path, fmt::format("field '{}': unknown type code {}", name, f.type));
     for (auto s : f.shape)
-      if (s > (1u << 24)) throw InputError(path_, fmt::format("field '{}': implausible dimension {}", name, s));
+      if (s > (1u << 24)) throw InputError(path, fmt::format("field '{}': implausible dimension {}", name, s));
     if (f.offset > bytes.size() || !fits_in(f.shape, ts, bytes.size() - f.offset))
-      throw InputError(path_, fmt::format("field '{}': data (shape {} of {}-byte entries at offset {}) extend past the end of the file "
-                                          "({} bytes): truncated?",
-                                          name, shape_string(f.shape), ts, f.offset, bytes.size()));
+      throw InputError(path, fmt::format("field '{}': data (shape {} of {}-byte entries at offset {}) extend past the end of the file "
+                                         "({} bytes): truncated?",
+                                         name, shape_string(f.shape), ts, f.offset, bytes.size()));
     fields[name] = std::move(f);
   }
+  return fields;
+}
 
+// Field `name`, which must be present with `ndim` dimensions of `type`.
+const Field& required_field(const std::string& path, const std::map<std::string, Field>& fields, const std::string& name,
+                            TensorType type, size_t ndim) {
+  auto it = fields.find(name);
+  if (it == fields.end()) throw InputError(path, fmt::format("missing field '{}'", name));
+  if (it->second.type != std::uint8_t(type) || it->second.shape.size() != ndim)
+    throw InputError(path, fmt::format("field '{}': expected {} dimension(s) of type code {}, found shape {} type {}", name, ndim,
+                                       int(type), shape_string(it->second.shape), it->second.type));
+  return it->second;
+}
+
+// The colour table as three channel tables of nt × grid × grid values: `rgb`, or `spectra` +
+// `wavelengths` converted node by node (spectral_rgb.h).
+struct ColourTable {
+  std::array<std::vector<float>, 3> rgb;
+  size_t negative_values = 0;  // entries < 0 (measurement noise, kept: DESIGN.md §2)
+  bool spectral = false;
+};
+ColourTable read_colour_table(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                              const std::map<std::string, Field>& fields, size_t nt, size_t grid) {
+  const size_t cells = grid * grid;
+  ColourTable out;
+  for (auto& c : out.rgb) c.resize(nt * cells);
+  if (fields.count("rgb")) {
+    const Field& f = required_field(path, fields, "rgb", TensorType::Float32, 5);
+    if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != 3 || f.shape[3] != grid || f.shape[4] != grid)
+      throw InputError(path, fmt::format("field 'rgb' has shape {}, expected [1,{},3,{},{}]", shape_string(f.shape), nt, grid, grid));
+    const std::vector<float> v = floats(bytes, f);
+    for (size_t t = 0; t < nt; ++t)
+      for (size_t c = 0; c < 3; ++c)
+        for (size_t i = 0; i < cells; ++i) {
+          const float x = v[(t * 3 + c) * cells + i];
+          out.rgb[c][t * cells + i] = x;
+          out.negative_values += x < 0;
+        }
+    return out;
+  }
+  if (!fields.count("spectra")) throw InputError(path, "missing field 'rgb' (or 'spectra' + 'wavelengths')");
+  out.spectral = true;
+  const Field& f = required_field(path, fields, "spectra", TensorType::Float32, 5);
+  const Field& wf = required_field(path, fields, "wavelengths", TensorType::Float32, 1);
+  const std::vector<float> wl_f = floats(bytes, wf);
+  const size_t nl = wl_f.size();
+  if (nl == 0) throw InputError(path, "field 'wavelengths' is empty: 'spectra' needs at least one wavelength");
+  if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != grid || f.shape[4] != grid)
+    throw InputError(path, fmt::format("field 'spectra' has shape {}, expected [1,{},{},{},{}]", shape_string(f.shape), nt, nl, grid, grid));
+  const std::vector<double> wl(wl_f.begin(), wl_f.end());
+  const Eigen::MatrixXd m = default_spectrum_to_rgb().matrix(wl);
+  const std::vector<float> v = floats(bytes, f);
+  Eigen::VectorXd s{Eigen::Index(nl)};
+  for (size_t t = 0; t < nt; ++t)
+    for (size_t i = 0; i < cells; ++i) {
+      for (size_t l = 0; l < nl; ++l) {
+        s[Eigen::Index(l)] = v[(t * nl + l) * cells + i];
+        out.negative_values += s[Eigen::Index(l)] < 0;
+      }
+      const Eigen::Vector3d c = m * s;
+      for (size_t k = 0; k < 3; ++k) out.rgb[k][t * cells + i] = float(c[Eigen::Index(k)]);
+    }
+  return out;
+}
+
+}  // namespace
+
+RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(path_, "cannot open file");
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::map<std::string, Field> fields = read_fields(bytes, path_);
   auto field = [&](const std::string& name, TensorType type, size_t ndim) -> const Field& {
-    auto it = fields.find(name);
-    if (it == fields.end()) throw InputError(path_, fmt::format("missing field '{}'", name));
-    if (it->second.type != std::uint8_t(type) || it->second.shape.size() != ndim)
-      throw InputError(path_, fmt::format("field '{}': expected {} dimension(s) of type code {}, found shape {} type {}", name, ndim,
-                                          int(type), shape_string(it->second.shape), it->second.type));
-    return it->second;
+    return required_field(path_, fields, name, type, ndim);
   };
   const Field& theta_f = field("theta_i", TensorType::Float32, 1);
   const Field& phi_f = field("phi_i", TensorType::Float32, 1);
@@ -285,48 +349,9 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     if (f->shape[0] < 2 || f->shape[1] < 2) throw InputError(path_, fmt::format("fields 'sigma'/'ndf' need at least 2 x 2 entries, found {}", shape_string(f->shape)));
   check_tables(path_, bytes, fields);
   grid_ = int(ls[2]);
-  const size_t cells = size_t(grid_) * size_t(grid_);
-
-  // Colour table: `rgb`, or `spectra` + `wavelengths` converted node by node (spectral_rgb.h).
-  std::array<std::vector<float>, 3> rgb;
-  for (auto& c : rgb) c.resize(nt * cells);
-  if (fields.count("rgb")) {
-    const Field& f = field("rgb", TensorType::Float32, 5);
-    if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != 3 || f.shape[3] != ls[2] || f.shape[4] != ls[3])
-      throw InputError(path_, fmt::format("field 'rgb' has shape {}, expected [1,{},3,{},{}]", shape_string(f.shape), nt, grid_, grid_));
-    const std::vector<float> v = floats(bytes, f);
-    for (size_t t = 0; t < nt; ++t)
-      for (size_t c = 0; c < 3; ++c)
-        for (size_t i = 0; i < cells; ++i) {
-          const float x = v[(t * 3 + c) * cells + i];
-          rgb[c][t * cells + i] = x;
-          negative_values_ += x < 0;
-        }
-  } else if (fields.count("spectra")) {
-    spectral_ = true;
-    const Field& f = field("spectra", TensorType::Float32, 5);
-    const Field& wf = field("wavelengths", TensorType::Float32, 1);
-    const std::vector<float> wl_f = floats(bytes, wf);
-    const size_t nl = wl_f.size();
-    if (nl == 0) throw InputError(path_, "field 'wavelengths' is empty: 'spectra' needs at least one wavelength");
-    if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != ls[2] || f.shape[4] != ls[3])
-      throw InputError(path_, fmt::format("field 'spectra' has shape {}, expected [1,{},{},{},{}]", shape_string(f.shape), nt, nl, grid_, grid_));
-    const std::vector<double> wl(wl_f.begin(), wl_f.end());
-    const Eigen::MatrixXd m = default_spectrum_to_rgb().matrix(wl);
-    const std::vector<float> v = floats(bytes, f);
-    Eigen::VectorXd s{Eigen::Index(nl)};
-    for (size_t t = 0; t < nt; ++t)
-      for (size_t i = 0; i < cells; ++i) {
-        for (size_t l = 0; l < nl; ++l) {
-          s[Eigen::Index(l)] = v[(t * nl + l) * cells + i];
-          negative_values_ += s[Eigen::Index(l)] < 0;
-        }
-        const Eigen::Vector3d c = m * s;
-        for (size_t k = 0; k < 3; ++k) rgb[k][t * cells + i] = float(c[Eigen::Index(k)]);
-      }
-  } else {
-    throw InputError(path_, "missing field 'rgb' (or 'spectra' + 'wavelengths')");
-  }
+  ColourTable colour = read_colour_table(bytes, path_, fields, nt, size_t(grid_));
+  spectral_ = colour.spectral;
+  negative_values_ = colour.negative_values;
 
   const std::vector<std::vector<float>> params = {phi_i, theta_i_};
   ndf_ = MarginalWarp2D(floats(bytes, ndf_f).data(), int(ndf_f.shape[1]), int(ndf_f.shape[0]), {}, false);
@@ -334,8 +359,8 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
   vndf_ = MarginalWarp2D(floats(bytes, vndf_f).data(), int(vs[3]), int(vs[2]), params, true);
   luminance_raw_ = floats(bytes, lum_f);
   luminance_ = MarginalWarp2D(luminance_raw_.data(), grid_, grid_, params, false);
-  for (size_t c = 0; c < 3; ++c) rgb_[c] = MarginalWarp2D(rgb[c].data(), grid_, grid_, params, false);
-  rgb_raw_ = std::move(rgb);
+  for (size_t c = 0; c < 3; ++c) rgb_[c] = MarginalWarp2D(colour.rgb[c].data(), grid_, grid_, params, false);
+  rgb_raw_ = std::move(colour.rgb);
 }
 
 std::string RglBrdf::dimensions() const {
