@@ -79,32 +79,23 @@ double number_field(const nlohmann::json& v, const std::string& where) {
   return x;
 }
 
-}  // namespace
-
-FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_object()) throw InputError(where, "not a JSON object");
-  FitRecord r;
-  r.model = string_field(j, "model", where);
-  const Model& model = [&]() -> const Model& {
-    try {
-      return model_by_name(r.model);
-    } catch (const InputError& e) {
-      throw InputError(where + ": field 'model'", e.what());
-    }
-  }();
-  r.version = j.contains("brdfkit_version") && j["brdfkit_version"].is_string() ? j["brdfkit_version"].get<std::string>() : "";
-  const ParamTable& table = model.params();
-  r.values = ParamValues::defaults(table);
-  // "shape" (written since per-channel shapes are saved) or, in older files, fit.per_channel_shape.
+// "shape" or, in files written before per-channel shapes were saved, fit.per_channel_shape.
+bool per_channel_shape_of(const nlohmann::json& j, const std::string& where) {
   if (j.contains("shape")) {
     const std::string shape = string_field(j, "shape", where);
     if (shape != "shared" && shape != "per-channel")
       throw InputError(where + ": field 'shape'", "must be \"shared\" or \"per-channel\", not \"" + shape + "\"");
-    r.per_channel_shape = shape == "per-channel";
-  } else if (j.contains("fit") && j["fit"].is_object() && j["fit"].contains("per_channel_shape") &&
-             j["fit"]["per_channel_shape"].is_boolean()) {
-    r.per_channel_shape = j["fit"]["per_channel_shape"].get<bool>();
+    return shape == "per-channel";
   }
+  return j.contains("fit") && j["fit"].is_object() && j["fit"].contains("per_channel_shape") &&
+         j["fit"]["per_channel_shape"].is_boolean() && j["fit"]["per_channel_shape"].get<bool>();
+}
+
+// The "params" array: every parameter of the model once, three values within its bounds, equal
+// across channels for a shared parameter unless the fit has one shape per channel.
+void read_params(const nlohmann::json& j, const std::string& where, FitRecord& r) {
+  const ParamTable& table = model_by_name(r.model).params();
+  r.values = ParamValues::defaults(table);
   const auto& params = field(j, "params", where);
   if (!params.is_array()) throw InputError(where + ": field 'params'", "must be an array");
   std::vector<bool> seen(table.size(), false);
@@ -133,6 +124,10 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
   }
   for (size_t i = 0; i < table.size(); ++i)
     if (!seen[i]) throw InputError(where + ": field 'params'", "parameter '" + table[i].name + "' is missing");
+}
+
+// What the fit was made from and how: data file and digest, metric, grid coarsening, metrics.
+void read_provenance(const nlohmann::json& j, const std::string& where, FitRecord& r) {
   if (j.contains("data") && j["data"].is_object()) {
     const auto& d = j["data"];
     if (d.contains("file") && d["file"].is_string()) r.data_file = d["file"].get<std::string>();
@@ -154,6 +149,23 @@ FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where
     for (const auto& it : j["metrics"].items())
       r.metrics.push_back(
           {it.key(), it.value().is_number() ? std::optional<double>(it.value().get<double>()) : std::nullopt, ""});
+}
+
+}  // namespace
+
+FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw InputError(where, "not a JSON object");
+  FitRecord r;
+  r.model = string_field(j, "model", where);
+  try {
+    model_by_name(r.model);
+  } catch (const InputError& e) {
+    throw InputError(where + ": field 'model'", e.what());
+  }
+  r.version = j.contains("brdfkit_version") && j["brdfkit_version"].is_string() ? j["brdfkit_version"].get<std::string>() : "";
+  r.per_channel_shape = per_channel_shape_of(j, where);
+  read_params(j, where, r);
+  read_provenance(j, where, r);
   return r;
 }
 
