@@ -1,6 +1,8 @@
 #include "brdfkit/core/text.h"
 
+#include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 namespace brdfkit {
 
@@ -68,6 +70,18 @@ std::string printable(std::string_view text) {
     }
   }
   return out;
+}
+
+std::optional<double> finite_number(const std::string& token) {
+  size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(token, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (used != token.size() || !std::isfinite(x)) return std::nullopt;
+  return x;
 }
 
 }  // namespace brdfkit

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/text.h"
 #include "brdfkit/models/published_fits.h"
 
 namespace brdfkit::fit {
@@ -17,15 +18,9 @@ namespace brdfkit::fit {
 namespace {
 
 double parse_number(const std::string& text, const std::string& where) {
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v)) throw InputError(where, "'" + text + "' is not a finite number");
-  return v;
+  const std::optional<double> v = finite_number(text);
+  if (!v) throw InputError(where, "'" + text + "' is not a finite number");
+  return *v;
 }
 
 // Edit distance, to suggest the material a user probably meant.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/text.h"
 
 namespace brdfkit {
 
@@ -14,15 +15,9 @@ std::vector<double> parse_numbers(const std::string& line, const std::string& wh
   std::istringstream ss(line);
   std::string tok;
   while (ss >> tok) {
-    size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(tok, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != tok.size() || !std::isfinite(x)) throw InputError(where, fmt::format("not a number: '{}'", tok));
-    v.push_back(x);
+    const std::optional<double> x = finite_number(tok);
+    if (!x) throw InputError(where, fmt::format("not a number: '{}'", tok));
+    v.push_back(*x);
   }
   return v;
 }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/core/text.h"
 
 namespace brdfkit::render {
 
@@ -17,15 +18,9 @@ PointLight parse_light(const std::string& arg) {
   std::vector<double> v;
   std::stringstream ss(arg);
   for (std::string part; std::getline(ss, part, ',');) {
-    size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != part.size() || !std::isfinite(x)) throw InputError(where, "'" + part + "' is not a finite number");
-    v.push_back(x);
+    const std::optional<double> x = finite_number(part);
+    if (!x) throw InputError(where, "'" + part + "' is not a finite number");
+    v.push_back(*x);
   }
   if (v.size() != 2 && v.size() != 3 && v.size() != 5) throw InputError(where, "expected theta,phi[,intensity] or theta,phi,r,g,b (degrees)");
   Rgb i = v.size() == 5 ? Rgb(v[2], v[3], v[4]) : Rgb::Constant(v.size() == 3 ? v[2] : 1.0);
