@@ -11,6 +11,7 @@ packages=(
   chromium
   libtinygltf-dev glslang-tools libosmesa6-dev
   python3 time
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-scipy python3-distributed python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -6,9 +6,6 @@
 // (fit/fit_job.h, the same code `fit-all` runs for each material × model). `--for gltf|mitsuba3|
 // pbrt-v4` fits the target renderer's own model (its default, or --model among its models) and
 // exports it in one step (export/export_fit.h), to --export-output or the fit's path with the
-// target's extension. `--for gltf|mitsuba3|
-// pbrt-v4` fits the target renderer's own model (its default, or --model among its models) and
-// exports it in one step (export/export_fit.h), to --export-output or the fit's path with the
 // target's extension.
 #include <fmt/format.h>
 

@@ -33,24 +33,6 @@ struct RenderArgs {
   bool quiet = false;
 };
 
-render::Scene make_scene(const RenderArgs& a) {
-  if (a.env.empty() && !a.env_constant && a.lights.empty()) return render::builtin_scene();
-  render::Scene s;
-  if (!a.env.empty()) {
-    s.environment = render::EnvironmentMap(render::read_hdr_image(a.env), a.env_rotation, a.env_intensity);
-    s.description = fmt::format("environment {} (rotated {} deg, x{})", a.env, a.env_rotation, a.env_intensity);
-  } else if (a.env_constant) {
-    if (!(*a.env_constant >= 0)) throw InputError("--env-constant", "radiance must be >= 0");
-    s.environment = render::EnvironmentMap::constant(Rgb::Constant(*a.env_constant));
-    s.description = fmt::format("constant environment {}", *a.env_constant);
-  }
-  for (const std::string& l : a.lights) {
-    s.lights.push_back(render::parse_light(l));
-    s.description += (s.description.empty() ? "" : " + ") + std::string("light ") + l;
-  }
-  return s;
-}
-
 // Subjects in the order given: measured files and fit JSONs from INPUTS, then the model or
 // parameter file of the BRDF options. Measured data are sampled through the first fit
 // (--proxy auto) or by the cosine (--proxy cosine).
@@ -60,30 +42,19 @@ struct Subjects {
 };
 Subjects load_subjects(const RenderArgs& a) {
   if (a.proxy != "auto" && a.proxy != "cosine") throw InputError("--proxy", "expected auto or cosine");
-  struct Entry {
-    std::string source;
-    std::optional<Brdf> fit;  // nullopt: the measured file data[measured]
-    size_t measured = 0;
-  };
   Subjects s;
-  std::vector<Entry> entries;
+  std::vector<render::SubjectInput> inputs;
   for (const std::string& in : a.inputs) {
     if (fs::path(in).extension() == ".json") {
-      entries.push_back({in, fit::load_params(in, "").brdf});
+      inputs.push_back({in, nullptr, fit::load_params(in, "").brdf});
     } else {
       s.data.push_back(load_measured(in));
-      entries.push_back({in, std::nullopt, s.data.size() - 1});
+      inputs.push_back({in, s.data.back().get(), std::nullopt});
     }
   }
   if (!a.brdf.model.empty() || !a.brdf.params_file.empty())
-    entries.push_back({a.brdf.params_file.empty() ? a.brdf.model : a.brdf.params_file, a.brdf.brdf()});
-  std::optional<Brdf> proxy;
-  for (const Entry& e : entries)
-    if (e.fit && !proxy && a.proxy == "auto") proxy = e.fit;
-  for (const Entry& e : entries) {
-    if (e.fit) s.list.push_back({std::string(e.fit->model().name()), e.source, false, render::model_reflector(*e.fit)});
-    else s.list.push_back({"measured", e.source, true, render::measured_reflector(*s.data[e.measured], proxy)});
-  }
+    inputs.push_back({a.brdf.params_file.empty() ? a.brdf.model : a.brdf.params_file, nullptr, a.brdf.brdf()});
+  s.list = render::make_subjects(inputs, a.proxy == "auto");
   return s;
 }
 
@@ -94,7 +65,7 @@ int run_render(const RenderArgs& a) {
   if (a.spp < 1) throw InputError("--spp", "must be >= 1");
   std::optional<tbb::global_control> limit;
   if (a.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(a.threads));
-  const render::Scene scene = make_scene(a);
+  const render::Scene scene = render::make_scene({a.env, a.env_rotation, a.env_intensity, a.env_constant, a.lights});
   Subjects subjects = load_subjects(a);
   render::ComparisonSettings cs;
   cs.render.width = cs.render.height = a.size;

@@ -7,15 +7,13 @@
 // `--clamp-negative` stores max(0, ρ) instead and says how many cells it clamped.
 #include <fmt/format.h>
 
-#include <atomic>
-#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/json_text.h"
 #include "brdfkit/measured/merl.h"
-#include "brdfkit/measured/merl_tabulate.h"
+#include "brdfkit/models/tabulate_brdf.h"
 #include "brdf_options.h"
 #include "command.h"
 
@@ -32,41 +30,18 @@ struct TabulateArgs {
 int run_tabulate(const TabulateArgs& a) {
   if (a.output.empty()) throw InputError("-o", "an output file is required");
   const Brdf brdf = a.brdf.brdf();
-  std::atomic<size_t> non_finite{0}, negative{0};
-  const merl::Table table = merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) {
-    Rgb v = brdf.eval(wi, wo);
-    if (!v.allFinite()) {
-      ++non_finite;
-      return Rgb(Rgb::Zero());  // counted; refused below
-    }
-    if ((v.array() < 0).any()) {
-      ++negative;
-      v = v.cwiseMax(0.0);
-    }
-    return v;
-  });
-  const std::string what = fmt::format("model '{}'", brdf.model().name());
-  if (non_finite > 0)
-    throw InputError(what, fmt::format("the BRDF is NaN or infinite in {} of the {} cells above the horizon; "
-                                       "nothing written",
-                                       non_finite.load(), table.valid_count()));
-  if (negative > 0 && !a.clamp_negative)
-    throw InputError(what, fmt::format("the BRDF is negative in {} cells (they would read as 'not measured'); "
-                                       "nothing written (--clamp-negative stores max(0, rho) instead)",
-                                       negative.load()));
-  merl::write(a.output, table);
-
-  Rgb peak = Rgb::Zero();
-  for (size_t k = 0; k < merl::kCellCount; ++k)
-    if (table.valid(k)) peak = peak.cwiseMax(table.value(k));
-  const size_t valid = table.valid_count();
+  const BrdfTable t = tabulate_brdf(brdf, a.clamp_negative);
+  merl::write(a.output, t.table);
+  const Rgb& peak = t.max_rho;
+  const size_t negative = t.clamped;
+  const size_t valid = t.table.valid_count();
   if (a.json) {
     nlohmann::json out = {{"output", a.output},
                           {"model", brdf.model().name()},
                           {"cells", merl::kCellCount},
                           {"cells_written", valid},
                           {"cells_below_horizon", merl::kCellCount - valid},
-                          {"cells_clamped", negative.load()},
+                          {"cells_clamped", negative},
                           {"max_rho", {peak[0], peak[1], peak[2]}}};
     if (!a.brdf.material.empty()) out["material"] = a.brdf.material;
     std::cout << json_text(out) << "\n";
@@ -75,7 +50,7 @@ int run_tabulate(const TabulateArgs& a) {
   std::cout << fmt::format("wrote {}: {}{}\n", a.output, brdf.model().name(),
                            a.brdf.material.empty() ? "" : " (material " + a.brdf.material + ")");
   std::cout << fmt::format("cells   {} written, {} below the horizon (raw -1){}\n", valid, merl::kCellCount - valid,
-                           negative > 0 ? fmt::format(", {} clamped from negative to 0", negative.load()) : "");
+                           negative > 0 ? fmt::format(", {} clamped from negative to 0", negative) : "");
   std::cout << fmt::format("max rho {:.6g} {:.6g} {:.6g} (1/sr)\n", peak[0], peak[1], peak[2]);
   return 0;
 }

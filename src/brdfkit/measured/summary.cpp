@@ -112,4 +112,54 @@ MeasuredSummary summarize(const MeasuredBrdf& brdf, const AlbedoQuadrature& q) {
   return s;
 }
 
+namespace {
+
+nlohmann::json rgb_json(const Rgb& c) { return nlohmann::json::array({c[0], c[1], c[2]}); }
+
+}  // namespace
+
+nlohmann::json summary_json(const MeasuredSummary& s) {
+  nlohmann::json j;
+  j["path"] = s.path;
+  j["format"] = s.format;
+  j["dimensions"] = s.dimensions;
+  j["total"] = s.total;
+  j["valid"] = s.valid;
+  j["valid_fraction"] = s.total ? double(s.valid) / double(s.total) : 0.0;
+  nlohmann::json ch = nlohmann::json::object();
+  const char* names[3] = {"R", "G", "B"};
+  for (size_t c = 0; c < 3; ++c)
+    ch[names[c]] = {{"min", s.channels[c].min},
+                    {"max", s.channels[c].max},
+                    {"mean", s.channels[c].mean},
+                    {"negative", s.channels[c].negative}};
+  j["channels"] = ch;
+  j["albedo_method"] = s.albedo_method;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const AlbedoRow& r : s.albedo) {
+    nlohmann::json row = {{"theta_i_deg", r.theta_i / kDeg}};
+    if (r.albedo) {
+      row["rgb"] = rgb_json(r.albedo->value);
+      row["luminance"] = luminance(r.albedo->value);
+      row["missing_fraction"] = r.albedo->missing_fraction;
+    } else {
+      row["rgb"] = nullptr;
+    }
+    rows.push_back(row);
+  }
+  j["albedo"] = rows;
+  if (s.max_albedo) {
+    j["max_albedo"] = {{"pooling", "per channel: each channel's maximum over theta_i in [0, 80] deg; luminance: "
+                                   "maximum of Y = 0.212671 R + 0.715160 G + 0.072169 B"},
+                       {"rgb", rgb_json(*s.max_albedo)},
+                       {"rgb_theta_i_deg",
+                        {s.max_albedo_theta_i[0] / kDeg, s.max_albedo_theta_i[1] / kDeg, s.max_albedo_theta_i[2] / kDeg}},
+                       {"luminance", *s.max_luminance},
+                       {"luminance_theta_i_deg", s.max_luminance_theta_i / kDeg}};
+  } else {
+    j["max_albedo"] = nullptr;
+  }
+  return j;
+}
+
 }  // namespace brdfkit

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "brdfkit/measured/albedo.h"
 #include "brdfkit/measured/measured_brdf.h"
 
@@ -45,5 +47,8 @@ struct MeasuredSummary {
 
 // Throws what the BRDF's methods throw; never returns NaN for finite data.
 MeasuredSummary summarize(const MeasuredBrdf& brdf, const AlbedoQuadrature& q = {});
+
+// The summary as `brdfkit info --json` and Python's Measured.info() give it (angles in degrees).
+nlohmann::json summary_json(const MeasuredSummary& s);
 
 }  // namespace brdfkit

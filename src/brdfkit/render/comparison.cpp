@@ -134,4 +134,16 @@ nlohmann::json write_comparison(const Comparison& c, const fs::path& stem, bool 
   return j;
 }
 
+std::vector<Subject> make_subjects(const std::vector<SubjectInput>& inputs, bool proxy_first_fit) {
+  std::optional<Brdf> proxy;
+  for (const SubjectInput& in : inputs)
+    if (in.fit && !proxy && proxy_first_fit) proxy = in.fit;
+  std::vector<Subject> out;
+  for (const SubjectInput& in : inputs) {
+    if (in.measured) out.push_back({"measured", in.source, true, measured_reflector(*in.measured, proxy)});
+    else out.push_back({std::string(in.fit->model().name()), in.source, false, model_reflector(*in.fit)});
+  }
+  return out;
+}
+
 }  // namespace brdfkit::render

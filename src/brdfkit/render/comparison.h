@@ -46,6 +46,17 @@ struct Comparison {
   ComparisonSettings settings;
 };
 
+// What a caller renders: measured data (not owned; it must outlive the subjects) or a fit.
+struct SubjectInput {
+  std::string source;  // the file it came from
+  const MeasuredBrdf* measured = nullptr;
+  std::optional<Brdf> fit;  // when not measured
+};
+// Subjects in the order given, labelled "measured" or by the fit's model. Measured data are drawn
+// by the first fit among the inputs mixed with the cosine (proxy_first_fit), or by the cosine
+// alone (render/reflector.h).
+std::vector<Subject> make_subjects(const std::vector<SubjectInput>& inputs, bool proxy_first_fit);
+
 // InputError when there is no subject.
 Comparison render_comparison(const std::vector<Subject>& subjects, const Scene& scene, const ComparisonSettings& settings);
 

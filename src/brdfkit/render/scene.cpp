@@ -1,10 +1,13 @@
 #include "brdfkit/render/scene.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <sstream>
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/text.h"
+#include "brdfkit/render/image_io.h"
 
 namespace brdfkit::render {
 
@@ -33,6 +36,27 @@ Scene builtin_scene() {
   s.environment = EnvironmentMap::constant(Rgb::Constant(0.1));
   s.lights = {light_from_camera_angles(45, 135, Rgb::Constant(3.0)), light_from_camera_angles(60, -20, Rgb::Constant(0.8))};
   s.description = "built-in: key light (45 deg, upper left, 3), fill light (60 deg, right, 0.8), uniform sky 0.1";
+  return s;
+}
+
+Scene make_scene(const SceneSettings& a) {
+  if (a.env.empty() && !a.env_constant && a.lights.empty()) return builtin_scene();
+  Scene s;
+  if (!a.env.empty()) {
+    if (!std::isfinite(a.env_rotation)) throw SettingError("env_rotation", "must be a finite angle in degrees");
+    if (!(a.env_intensity >= 0) || !std::isfinite(a.env_intensity)) throw SettingError("env_intensity", "must be >= 0");
+    s.environment = EnvironmentMap(read_hdr_image(a.env), a.env_rotation, a.env_intensity);
+    s.description = fmt::format("environment {} (rotated {} deg, x{})", a.env, a.env_rotation, a.env_intensity);
+  } else if (a.env_constant) {
+    if (!(*a.env_constant >= 0) || !std::isfinite(*a.env_constant))
+      throw SettingError("env_constant", "radiance must be >= 0");
+    s.environment = EnvironmentMap::constant(Rgb::Constant(*a.env_constant));
+    s.description = fmt::format("constant environment {}", *a.env_constant);
+  }
+  for (const std::string& l : a.lights) {
+    s.lights.push_back(parse_light(l));
+    s.description += (s.description.empty() ? "" : " + ") + std::string("light ") + l;
+  }
   return s;
 }
 

@@ -33,4 +33,15 @@ struct Scene {
 // uniform environment of radiance 0.1 (so the rim never goes black).
 Scene builtin_scene();
 
+// The light a caller describes: a map (path, turned about the vertical axis by `env_rotation`
+// degrees, radiance × `env_intensity`) or a constant environment, and lights in parse_light's
+// form. Nothing at all: builtin_scene(). InputError naming the map file, a light or the setting.
+struct SceneSettings {
+  std::string env;
+  double env_rotation = 0, env_intensity = 1;
+  std::optional<double> env_constant;
+  std::vector<std::string> lights;
+};
+Scene make_scene(const SceneSettings& s);
+
 }  // namespace brdfkit::render

@@ -60,6 +60,20 @@ std::vector<BatchInput> list_batch_inputs(const std::vector<std::string>& args) 
   return out;
 }
 
+std::string batch_progress_line(const BatchRow& row, const std::string& fit_metric, size_t done, size_t total) {
+  const std::string what = fmt::format("[{}/{}] {} {}", done, total, row.material, row.model);
+  const auto v = row.metric(fit_metric);
+  const std::string value = v ? fmt::format("{} {:.5g}", fit_metric, *v) : fit_metric + " n/a";
+  switch (row.status) {
+    case FitStatus::Failed: return fmt::format("{}: FAILED: {}", what, row.reason);
+    case FitStatus::Elsewhere: return what + ": running in another process";
+    case FitStatus::Unfinished: return what + ": unfinished: " + row.reason;
+    case FitStatus::Resumed: return fmt::format("{}: skipped, already saved ({})", what, value);
+    case FitStatus::Fitted: break;
+  }
+  return fmt::format("{}: {}, {:.1f} s{}", what, value, row.seconds, row.converged ? "" : " (not converged)");
+}
+
 namespace {
 
 // One material's data, checksum and report metrics, loaded by the first fit that needs them and
@@ -123,14 +137,41 @@ class Batch {
       if (rows_[k].status == FitStatus::Elsewhere) again.push_back(k);
     run_pool(again, true);
     if (output_error_) std::rethrow_exception(output_error_);
+    return finish(t0);
+  }
+
+  // One fit, as the last try of run(): what a task of a batch spread over processes runs.
+  BatchRow run_single(size_t k) {
+    rows_.resize(inputs_.size() * models_.size());
+    rows_[k].material = inputs_[k / models_.size()].material;
+    rows_[k].model = std::string(models_[k % models_.size()]->name());
+    run_one(k, true);
+    if (output_error_) std::rethrow_exception(output_error_);
+    return rows_[k];
+  }
+
+  // The summary of rows made elsewhere (run_single in other processes).
+  BatchSummary summarize_rows(std::vector<BatchRow> rows, double seconds_before) {
+    const auto t0 = std::chrono::steady_clock::now() -
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds_before));
+    if (rows.size() != inputs_.size() * models_.size())
+      throw SettingError("rows", fmt::format("{} rows for {} materials x {} models", rows.size(), inputs_.size(),
+                                             models_.size()));
+    rows_ = std::move(rows);
+    if (published_)
+      for (size_t m = 0; m < inputs_.size(); ++m) compare(inputs_[m], materials_[m]);
+    return finish(t0);
+  }
+
+ private:
+  bool stopping() const { return aborted_ || (stop_ && stop_->load()); }
+
+  BatchSummary finish(std::chrono::steady_clock::time_point t0) {
     BatchSummary s = summarize();
     s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     log_total(s);
     return s;
   }
-
- private:
-  bool stopping() const { return aborted_ || (stop_ && stop_->load()); }
 
   // Runs the fits `ks` on opt_.jobs threads; a fit not started when the batch stops is unfinished.
   void run_pool(const std::vector<size_t>& ks, bool last_try) {
@@ -204,17 +245,7 @@ class Batch {
       log(fmt::format("{} {}: claimed by another process; tried again after the others", row.material, row.model));
       return;
     }
-    const std::string what = fmt::format("[{}/{}] {} {}", ++done_, rows_.size(), row.material, row.model);
-    const auto v = row.metric(metric_);
-    const std::string value = v ? fmt::format("{} {:.5g}", metric_, *v) : metric_ + " n/a";
-    switch (row.status) {
-      case FitStatus::Failed: return log(fmt::format("{}: FAILED: {}", what, row.reason));
-      case FitStatus::Elsewhere: return log(what + ": running in another process");
-      case FitStatus::Unfinished: return log(what + ": unfinished: " + row.reason);
-      case FitStatus::Resumed: return log(fmt::format("{}: skipped, already saved ({})", what, value));
-      case FitStatus::Fitted:
-        return log(fmt::format("{}: {}, {:.1f} s{}", what, value, row.seconds, row.converged ? "" : " (not converged)"));
-    }
+    log(batch_progress_line(row, metric_, ++done_, rows_.size()));
   }
 
   void log_total(const BatchSummary& s) {
@@ -437,6 +468,27 @@ BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vec
   if (ec || !fs::is_directory(out_dir)) throw InputError(out_dir.string(), "cannot create the output folder");
   Batch batch(inputs, models, out_dir, settings, log, stop);
   return batch.run();
+}
+
+BatchRow run_batch_fit(const BatchInput& input, const Model& model, const fs::path& out_dir,
+                       const BatchSettings& settings) {
+  settings.validate();
+  BatchSettings one = settings;
+  one.compare.clear();  // the published fits are the summary's (summarize_batch)
+  const std::vector<BatchInput> inputs{input};
+  const std::vector<const Model*> models{&model};
+  const BatchLog no_log;
+  Batch batch(inputs, models, out_dir, one, no_log, nullptr);
+  return batch.run_single(0);
+}
+
+BatchSummary summarize_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
+                             const fs::path& out_dir, const BatchSettings& settings, std::vector<BatchRow> rows,
+                             bool interrupted, double seconds, const BatchLog& log) {
+  settings.validate();
+  const std::atomic<bool> stop{interrupted};
+  Batch batch(inputs, models, out_dir, settings, log, &stop);
+  return batch.summarize_rows(std::move(rows), seconds);
 }
 
 }  // namespace brdfkit::fit

@@ -70,4 +70,23 @@ BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vec
                            const std::filesystem::path& out_dir, const BatchSettings& settings,
                            const BatchLog& log = {}, const std::atomic<bool>* stop = nullptr);
 
+// A batch spread over processes or machines (Python's brdfkit.batch on a Dask cluster) is these
+// two steps. run_batch_fit is one task: one fit under the claim protocol above, in any process
+// that sees OUTDIR, returning the row run_fit_batch would list for it (a claim held elsewhere:
+// FitStatus::Elsewhere; the caller runs the task once more at the end, as run_fit_batch does).
+// `settings.compare` and `jobs` are the summary's and the caller's. OutputError as above.
+BatchRow run_batch_fit(const BatchInput& input, const Model& model, const std::filesystem::path& out_dir,
+                       const BatchSettings& settings);
+// summarize_batch then writes summary.csv and table.txt from every task's row, material-major in
+// the order of inputs × models (a task never run: FitStatus::Unfinished with its reason), exactly
+// as run_fit_batch writes them: rows not saved by their task are read again from disk, the
+// published fits of `compare` evaluated. `interrupted`: the batch was stopped before its end;
+// `seconds`: how long its tasks took (wall time), for the summary and the log.
+BatchSummary summarize_batch(const std::vector<BatchInput>& inputs, const std::vector<const Model*>& models,
+                             const std::filesystem::path& out_dir, const BatchSettings& settings,
+                             std::vector<BatchRow> rows, bool interrupted, double seconds, const BatchLog& log = {});
+
+// The line a batch logs for a finished fit: "[done/total] material model: <status and value>".
+std::string batch_progress_line(const BatchRow& row, const std::string& fit_metric, size_t done, size_t total);
+
 }  // namespace brdfkit::fit
