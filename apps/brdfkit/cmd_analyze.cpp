@@ -221,65 +221,57 @@ Output albedo(const AnalyzeArgs& a, const MeasuredBrdf& data) {
   return o;
 }
 
-Output ndf(const AnalyzeArgs& a, const MeasuredBrdf& data) {
-  const std::vector<std::string> report = a.report.empty() ? std::vector<std::string>{a.metric} : fit::parse_metric_list(a.report);
-  Output o;
-  json doc = {{"analysis", "ndf"}, {"model", analysis::TabulatedCookTorrance::kName}};
+struct NdfModel {
   std::optional<analysis::TabulatedCookTorrance> model;
   ParamValues values;
-  if (!a.params.empty()) {
-    // A table saved by this command: recompute its metrics (what `brdfkit error` does for catalogue models).
-    std::ifstream in(a.params);
-    if (!in) throw InputError(a.params, "cannot open");
-    json saved;
-    try {
-      in >> saved;
-    } catch (const json::exception& e) {
-      throw InputError(a.params, std::string("not JSON: ") + e.what());
-    }
-    if (saved.value("model", "") != analysis::TabulatedCookTorrance::kName || !saved.contains("ndf_table"))
-      throw InputError(a.params, "not a tabulated-NDF model saved by `brdfkit analyze --what ndf`");
-    model.emplace(analysis::TabulatedCookTorrance::from_table_json(saved["ndf_table"], a.params + ": ndf_table"));
-    values = ParamValues::defaults(model->params());
-    for (const auto& p : model->params()) {
-      if (!saved["parameters"].contains(p.name) || !saved["parameters"][p.name].is_array() || saved["parameters"][p.name].size() != 3)
-        throw InputError(a.params, "parameters." + p.name + " must be an array of 3 numbers");
-      for (int c = 0; c < 3; ++c) values.set(model->params(), p.name, saved["parameters"][p.name][size_t(c)].get<double>(), c);
-    }
-    o.text = fmt::format("tabulated-NDF Cook-Torrance model from {}\n", a.params);
-  } else {
-    const fit::Metric metric = fit::make_metric(a.metric, data, {a.coarsen});
-    analysis::NdfEstimationOptions opt;
-    opt.max_iterations = a.iterations;
-    opt.f0 = a.f0;
-    if (a.nodes > 0) opt.nodes = a.nodes;
-    const analysis::NdfEstimate e = analysis::estimate_tabulated_ndf(metric, opt);
-    model.emplace(e.model());
-    values = e.values;
-    o.text = fmt::format("tabulated NDF estimated from {} (seed 002 5.1): {} nodes, {} masking iteration(s), F0 {} {:.4f}\n",
-                         data.path(), e.theta.size(), e.iterations, a.f0 ? "given" : "fitted", e.f0);
-    o.text += fmt::format("  {} during the iterations:", a.metric);
-    for (double v : e.residual_history) o.text += fmt::format(" {:.6g}", v);
-    o.text += "\n";
-    doc["iterations"] = e.iterations;
-    doc["residual_history"] = e.residual_history;
-    doc["f0_fitted"] = !a.f0.has_value();
+};
+
+// A table saved by this command: its metrics are recomputed (what `brdfkit error` does for
+// catalogue models).
+NdfModel saved_ndf(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file, "cannot open");
+  json saved;
+  try {
+    in >> saved;
+  } catch (const json::exception& e) {
+    throw InputError(file, std::string("not JSON: ") + e.what());
   }
-  json params = json::object();
-  for (size_t i = 0; i < model->params().size(); ++i)
-    params[model->params()[i].name] = json::array({values.values[0][i], values.values[1][i], values.values[2][i]});
-  doc["parameters"] = params;
-  doc["ndf_table"] = model->table_json();
-  doc["data"] = {{"file", a.file}, {"sha256", sha256_file(a.file)}};
-  doc["grid_coarsen"] = a.coarsen;
-  o.text += fit::format_params(*model, values);
-  fit::MetricStore store(data);
-  const auto metrics = fit::report_metrics(store, *model, values, report, {a.coarsen});
-  json mj = json::object();
-  for (const auto& m : metrics) mj[m.id] = m.value ? json(*m.value) : json(nullptr);
-  doc["metrics"] = mj;
-  o.text += "metrics\n" + fit::format_metrics(metrics);
-  // Reference fits of catalogue models under the same metric and grid.
+  if (saved.value("model", "") != analysis::TabulatedCookTorrance::kName || !saved.contains("ndf_table"))
+    throw InputError(file, "not a tabulated-NDF model saved by `brdfkit analyze --what ndf`");
+  NdfModel out;
+  out.model.emplace(analysis::TabulatedCookTorrance::from_table_json(saved["ndf_table"], file + ": ndf_table"));
+  out.values = ParamValues::defaults(out.model->params());
+  const json& params = saved["parameters"];
+  for (const auto& p : out.model->params()) {
+    if (!params.is_object() || !params.contains(p.name) || !params[p.name].is_array() || params[p.name].size() != 3)
+      throw InputError(file, "parameters." + p.name + " must be an array of 3 numbers");
+    for (int c = 0; c < 3; ++c) out.values.set(out.model->params(), p.name, params[p.name][size_t(c)].get<double>(), c);
+  }
+  return out;
+}
+
+// seed 002 §5.1's estimate, with what it did in the text and the JSON.
+NdfModel estimated_ndf(const AnalyzeArgs& a, const MeasuredBrdf& data, Output& o, json& doc) {
+  const fit::Metric metric = fit::make_metric(a.metric, data, {a.coarsen});
+  analysis::NdfEstimationOptions opt;
+  opt.max_iterations = a.iterations;
+  opt.f0 = a.f0;
+  if (a.nodes > 0) opt.nodes = a.nodes;
+  const analysis::NdfEstimate e = analysis::estimate_tabulated_ndf(metric, opt);
+  o.text = fmt::format("tabulated NDF estimated from {} (seed 002 5.1): {} nodes, {} masking iteration(s), F0 {} {:.4f}\n",
+                       data.path(), e.theta.size(), e.iterations, a.f0 ? "given" : "fitted", e.f0);
+  o.text += fmt::format("  {} during the iterations:", a.metric);
+  for (double v : e.residual_history) o.text += fmt::format(" {:.6g}", v);
+  o.text += "\n";
+  doc["iterations"] = e.iterations;
+  doc["residual_history"] = e.residual_history;
+  doc["f0_fitted"] = !a.f0.has_value();
+  return {e.model(), e.values};
+}
+
+// Reference fits of catalogue models (--compare) under the same metric and grid.
+void compare_catalogue_fits(const AnalyzeArgs& a, const MeasuredBrdf& data, Output& o, json& doc) {
   json cmp = json::object();
   for (const std::string& name : split(a.compare)) {
     const Model& m = model_by_name(name);
@@ -289,9 +281,38 @@ Output ndf(const AnalyzeArgs& a, const MeasuredBrdf& data) {
     o.text += fmt::format("compare    {:<28} {} = {:.6g} (fitted here, {} start(s))\n", name, a.metric, r.metric_value, a.starts);
   }
   if (!cmp.empty()) doc["compare"] = cmp;
+}
+
+Output ndf(const AnalyzeArgs& a, const MeasuredBrdf& data) {
+  const std::vector<std::string> report = a.report.empty() ? std::vector<std::string>{a.metric} : fit::parse_metric_list(a.report);
+  Output o;
+  json doc = {{"analysis", "ndf"}, {"model", analysis::TabulatedCookTorrance::kName}};
+  NdfModel n;
+  if (!a.params.empty()) {
+    n = saved_ndf(a.params);
+    o.text = fmt::format("tabulated-NDF Cook-Torrance model from {}\n", a.params);
+  } else {
+    n = estimated_ndf(a, data, o, doc);
+  }
+  const analysis::TabulatedCookTorrance& model = *n.model;
+  json params = json::object();
+  for (size_t i = 0; i < model.params().size(); ++i)
+    params[model.params()[i].name] = json::array({n.values.values[0][i], n.values.values[1][i], n.values.values[2][i]});
+  doc["parameters"] = params;
+  doc["ndf_table"] = model.table_json();
+  doc["data"] = {{"file", a.file}, {"sha256", sha256_file(a.file)}};
+  doc["grid_coarsen"] = a.coarsen;
+  o.text += fit::format_params(model, n.values);
+  fit::MetricStore store(data);
+  const auto metrics = fit::report_metrics(store, model, n.values, report, {a.coarsen});
+  json mj = json::object();
+  for (const auto& m : metrics) mj[m.id] = m.value ? json(*m.value) : json(nullptr);
+  doc["metrics"] = mj;
+  o.text += "metrics\n" + fit::format_metrics(metrics);
+  compare_catalogue_fits(a, data, o, doc);
   o.csv = "theta_deg,D\n";
-  for (size_t j = 0; j < model->distribution().theta.size(); ++j)
-    o.csv += fmt::format("{},{}\n", deg(model->distribution().theta[j]), model->distribution().value[j]);
+  for (size_t j = 0; j < model.distribution().theta.size(); ++j)
+    o.csv += fmt::format("{},{}\n", deg(model.distribution().theta[j]), model.distribution().value[j]);
   o.doc = doc;
   return o;
 }

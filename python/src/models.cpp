@@ -50,20 +50,19 @@ py::dict param_dict(const Brdf& b) {
 
 // A number sets every channel; a sequence of three sets R, G, B (per-channel parameters only).
 void set_param(const ParamTable& table, ParamValues& values, const std::string& name, const py::handle& value) {
-  if (py::isinstance<py::str>(value) || !(py::isinstance<py::sequence>(value) || py::hasattr(value, "__len__"))) {
-    double x;
-    try {
-      x = value.cast<double>();
-    } catch (const py::cast_error&) {
-      throw InputError("parameter '" + name + "'", "expected a number or three numbers (R, G, B)");
-    }
-    values.set(table, name, x);
+  const std::string what = "parameter '" + name + "'";
+  try {
+    values.set(table, name, value.cast<double>());
     return;
+  } catch (const py::cast_error&) {
   }
-  const auto xs = value.cast<std::vector<double>>();
-  if (xs.size() != 3)
-    throw InputError("parameter '" + name + "'", "expected a number or three numbers (R, G, B), got " +
-                                                     std::to_string(xs.size()));
+  std::vector<double> xs;
+  try {
+    xs = value.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+    throw InputError(what, "expected a number or three numbers (R, G, B)");
+  }
+  if (xs.size() != 3) throw InputError(what, fmt::format("expected a number or three numbers (R, G, B), got {}", xs.size()));
   for (int c = 0; c < 3; ++c) values.set(table, name, xs[size_t(c)], c);
 }
 
@@ -148,9 +147,7 @@ rho (eval) excludes the cosine: the reflected radiance is integral of L(wi) rho(
 Directions are unit vectors in the local frame (z = normal), wi towards the light and wo towards the
 viewer, as arrays of shape (n, 3) or (3,).)";
 
-}  // namespace
-
-void bind_models(py::module_& m) {
+void bind_catalogue(py::module_& m) {
   py::class_<Model, std::unique_ptr<Model, py::nodelete>>(m, "Model", "A model of the catalogue: name, description and parameter table.")
       .def_property_readonly("name", [](const Model& x) { return std::string(x.name()); }, "Its name in the catalogue.")
       .def_property_readonly("description", [](const Model& x) { return std::string(x.description()); },
@@ -166,7 +163,9 @@ void bind_models(py::module_& m) {
   m.def("model", [](const std::string& name) { return &model_by_name(name); }, py::arg("name"),
         py::return_value_policy::reference,
         "The model called `name` (a sum 'a+b' of models too); ValueError listing the known names otherwise.");
+}
 
+void bind_brdf(py::module_& m) {
   py::class_<Brdf>(m, "Brdf", kBrdfDoc)
       .def(py::init([](const std::string& name, const py::object& params, const py::kwargs& kw) {
              py::dict all = params.is_none() ? py::dict() : py::dict(params);
@@ -200,7 +199,9 @@ void bind_models(py::module_& m) {
       .def("__repr__", [](const Brdf& b) {
         return fmt::format("<brdfkit.Brdf {} {}>", b.model().name(), py::str(param_dict(b)).cast<std::string>());
       });
+}
 
+void bind_tabulate(py::module_& m) {
   py::class_<BrdfTable>(m, "MerlTable", "A BRDF tabulated on the MERL grid (brdfkit.tabulate).")
       .def("save", [](const BrdfTable& t, const std::filesystem::path& path) { merl::write(path, t.table); }, py::arg("path"),
            py::call_guard<py::gil_scoped_release>(), "Writes the MERL .binary file (atomically).")
@@ -218,6 +219,14 @@ void bind_models(py::module_& m) {
         "The BRDF on the MERL grid (each cell at its centre, cells below the horizon not measured), as "
         "`brdfkit tabulate` writes it. ValueError naming the model when it is NaN, infinite or negative in a cell "
         "(clamp_negative=True stores max(0, rho) instead).");
+}
+
+}  // namespace
+
+void bind_models(py::module_& m) {
+  bind_catalogue(m);
+  bind_brdf(m);
+  bind_tabulate(m);
 }
 
 }  // namespace brdfkit::python

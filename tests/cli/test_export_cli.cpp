@@ -49,7 +49,7 @@ TEST(ExportCli, OwnModelExportsExactlyAndReadsBack) {
 
 // --material picks the published fit that is refitted into the target's model: the exported glTF
 // material's albedo at θi = 30° is pink-felt's (a diffuse red-dominant felt), not alum-bronze's.
-// One refit on the full MERL grid (~10 s).
+// One refit on the full MERL grid (~13 s).
 TEST(ExportCli, MaterialChoosesThePublishedFitThatIsRefitted) {
   BRDFKIT_REQUIRE_DATA("published-fits/bagher2012-sgd.json");
   const fs::path dir = test::scratch_dir("export_cli_material");

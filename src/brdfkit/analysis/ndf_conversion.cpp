@@ -160,85 +160,83 @@ double rmse_fit(const NdfShape& from, double value, const NdfShape& to, const Rm
   return std::exp(lp);
 }
 
-std::optional<FittedFormula> sawicki_formula(const NdfShape& from, double v, const NdfShape& to) {
-  // The paper's groups: Beckmann (and Schlick, "approximates Beckmann for the same value of m_B",
-  // seed 001 §3), Blinn-Phong, Gauss, Sawicki, Trowbridge-Reitz. Constants exactly as printed,
-  // including 1.696 (C_TR → N) against 1.697 (N → C_TR) (DESIGN.md §11).
-  enum G { B, N, MG, DS, TR, None };
-  auto group = [](const NdfShape& s) {
-    if (s.name == "beckmann" || s.name == "schlick-rational") return B;
-    if (s.name == "blinn-phong") return N;
-    if (s.name == "gaussian") return MG;
-    if (s.name == "sawicki-rational") return DS;
-    if (s.name == "ggx") return TR;
-    return None;
-  };
-  const G f = group(from), t = group(to);
-  if (f == None || t == None) return std::nullopt;
-  auto eq12_to_N = [](double mb) { return 2 / (mb * mb) - 2.5; };
-  auto eq12_to_B = [](double n) { return kSqrt2 / std::sqrt(n + 2.5); };
-  auto eq14_to_N = [](double mg) { return 2 / (mg * mg) - 0.5; };
-  auto eq14_to_G = [](double n) { return kSqrt2 / std::sqrt(n + 0.5); };
-  auto eq15_to_DS = [](double n) { return 1.174 * n + 0.3; };
-  auto eq15_to_N = [](double nds) { return (nds - 0.3) / 1.174; };
-  auto t3_TR_to_N = [](double c) { return 1.696 * 1.696 / (c * c) - 4.5; };
-  auto t4_N_to_TR = [](double n) { return 1.697 / std::sqrt(n + 4.5); };
+namespace {
 
-  auto apply = [&](G a, G b, double x) -> FittedFormula {
-    if (a == b) return {x, a == B && from.name != to.name ? "identity (seed 001 §3: Schlick approximates Beckmann for the same m_B)" : "identity", 0};
-    switch (a) {
-      case B:
-        switch (b) {
-          case N: return {eq12_to_N(x), "Eq. 12: N = 2/m_B^2 - 2.5", 0};
-          case MG: return {0.5591 * x * x * x + x, "Eq. 13: m_G = 0.5591 m_B^3 + m_B", 0};
-          case DS: return {eq15_to_DS(eq12_to_N(x)), "Table 4: N = 2/m_B^2 - 2.5 (Eq. 12), then N_DS = 1.174 N + 0.3 (Eq. 15)", 0};
-          case TR: return {1.2 * x - 0.56 * x * x * x, "Table 4: C_TR = 1.2 m_B - 0.56 m_B^3", 0};
-          default: break;
-        }
-        break;
-      case N:
-        switch (b) {
-          case B: return {eq12_to_B(x), "Eq. 12: m_B = sqrt(2)/sqrt(N + 2.5)", 0};
-          case MG: return {eq14_to_G(x), "Eq. 14: m_G = sqrt(2)/sqrt(N + 0.5)", 0};
-          case DS: return {eq15_to_DS(x), "Eq. 15: N_DS = 1.174 N + 0.3", 0};
-          case TR: return {t4_N_to_TR(x), "Table 4: C_TR = 1.697/sqrt(N + 4.5)", 0};
-          default: break;
-        }
-        break;
-      case MG:
-        switch (b) {
-          case B: return {x - 0.4134 * x * x * x, "Eq. 13: m_B = m_G - 0.4134 m_G^3", 0};
-          case N: return {eq14_to_N(x), "Eq. 14: N = 2/m_G^2 - 0.5", 0};
-          case DS: return {eq15_to_DS(eq14_to_N(x)), "Table 4: N = 2/m_G^2 - 0.5 (Eq. 14), then N_DS = 1.174 N + 0.3 (Eq. 15)", 0};
-          case TR: return {1.186 * x - 0.835 * x * x * x, "Table 4: C_TR = 1.186 m_G - 0.835 m_G^3", 0};
-          default: break;
-        }
-        break;
-      case DS:
-        switch (b) {
-          case B: return {eq12_to_B(eq15_to_N(x)), "Table 3: N = (N_DS - 0.3)/1.174 (Eq. 15), then m_B = sqrt(2)/sqrt(N + 2.5) (Eq. 12)", 0};
-          case N: return {eq15_to_N(x), "Eq. 15: N = (N_DS - 0.3)/1.174", 0};
-          case MG: return {eq14_to_G(eq15_to_N(x)), "Table 3: N = (N_DS - 0.3)/1.174 (Eq. 15), then m_G = sqrt(2)/sqrt(N + 0.5) (Eq. 14)", 0};
-          case TR: return {t4_N_to_TR(eq15_to_N(x)), "Table 3: N = (N_DS - 0.3)/1.174 (Eq. 15), then C_TR = 1.697/sqrt(N + 4.5)", 0};
-          default: break;
-        }
-        break;
-      case TR:
-        switch (b) {
-          case B: return {0.8388 * x + 0.7 * std::pow(x, 4), "Table 3: m_B = 0.8388 C_TR + 0.7 C_TR^4", 0};
-          case N: return {t3_TR_to_N(x), "Table 3: N = 1.696^2/C_TR^2 - 4.5", 0};
-          case MG: return {0.8222 * x + 0.82 * x * x * x, "Table 3: m_G = 0.8222 C_TR + 0.82 C_TR^3", 0};
-          case DS: return {eq15_to_DS(t3_TR_to_N(x)), "Table 3: N = 1.696^2/C_TR^2 - 4.5, then N_DS = 1.174 N + 0.3 (Eq. 15)", 0};
-          default: break;
-        }
-        break;
-      default:
-        break;
-    }
-    return {std::numeric_limits<double>::quiet_NaN(), "", 0};
-  };
-  FittedFormula out = apply(f, t, v);
-  out.m_B = apply(f, B, v).value;
+// seed 001's groups: Beckmann (and Schlick, "approximates Beckmann for the same value of m_B",
+// seed 001 §3), Blinn-Phong, Gauss, Sawicki, Trowbridge-Reitz.
+enum class Group { B, N, MG, DS, TR };
+
+std::optional<Group> sawicki_group(const NdfShape& s) {
+  if (s.name == "beckmann" || s.name == "schlick-rational") return Group::B;
+  if (s.name == "blinn-phong") return Group::N;
+  if (s.name == "gaussian") return Group::MG;
+  if (s.name == "sawicki-rational") return Group::DS;
+  if (s.name == "ggx") return Group::TR;
+  return std::nullopt;
+}
+
+// Constants exactly as printed, including 1.696 (C_TR → N) against 1.697 (N → C_TR) (DESIGN.md §11).
+double eq12_to_N(double mb) { return 2 / (mb * mb) - 2.5; }
+double eq12_to_B(double n) { return kSqrt2 / std::sqrt(n + 2.5); }
+double eq14_to_N(double mg) { return 2 / (mg * mg) - 0.5; }
+double eq14_to_G(double n) { return kSqrt2 / std::sqrt(n + 0.5); }
+double eq15_to_DS(double n) { return 1.174 * n + 0.3; }
+double eq15_to_N(double nds) { return (nds - 0.3) / 1.174; }
+double t3_TR_to_N(double c) { return 1.696 * 1.696 / (c * c) - 4.5; }
+double t4_N_to_TR(double n) { return 1.697 / std::sqrt(n + 4.5); }
+
+struct SawickiConversion {
+  Group from, to;
+  double (*convert)(double);
+  const char* equation;
+};
+
+using enum Group;
+const SawickiConversion kConversions[] = {
+    {B, N, eq12_to_N, "Eq. 12: N = 2/m_B^2 - 2.5"},
+    {B, MG, [](double x) { return 0.5591 * x * x * x + x; }, "Eq. 13: m_G = 0.5591 m_B^3 + m_B"},
+    {B, DS, [](double x) { return eq15_to_DS(eq12_to_N(x)); },
+     "Table 4: N = 2/m_B^2 - 2.5 (Eq. 12), then N_DS = 1.174 N + 0.3 (Eq. 15)"},
+    {B, TR, [](double x) { return 1.2 * x - 0.56 * x * x * x; }, "Table 4: C_TR = 1.2 m_B - 0.56 m_B^3"},
+    {N, B, eq12_to_B, "Eq. 12: m_B = sqrt(2)/sqrt(N + 2.5)"},
+    {N, MG, eq14_to_G, "Eq. 14: m_G = sqrt(2)/sqrt(N + 0.5)"},
+    {N, DS, eq15_to_DS, "Eq. 15: N_DS = 1.174 N + 0.3"},
+    {N, TR, t4_N_to_TR, "Table 4: C_TR = 1.697/sqrt(N + 4.5)"},
+    {MG, B, [](double x) { return x - 0.4134 * x * x * x; }, "Eq. 13: m_B = m_G - 0.4134 m_G^3"},
+    {MG, N, eq14_to_N, "Eq. 14: N = 2/m_G^2 - 0.5"},
+    {MG, DS, [](double x) { return eq15_to_DS(eq14_to_N(x)); },
+     "Table 4: N = 2/m_G^2 - 0.5 (Eq. 14), then N_DS = 1.174 N + 0.3 (Eq. 15)"},
+    {MG, TR, [](double x) { return 1.186 * x - 0.835 * x * x * x; }, "Table 4: C_TR = 1.186 m_G - 0.835 m_G^3"},
+    {DS, B, [](double x) { return eq12_to_B(eq15_to_N(x)); },
+     "Table 3: N = (N_DS - 0.3)/1.174 (Eq. 15), then m_B = sqrt(2)/sqrt(N + 2.5) (Eq. 12)"},
+    {DS, N, eq15_to_N, "Eq. 15: N = (N_DS - 0.3)/1.174"},
+    {DS, MG, [](double x) { return eq14_to_G(eq15_to_N(x)); },
+     "Table 3: N = (N_DS - 0.3)/1.174 (Eq. 15), then m_G = sqrt(2)/sqrt(N + 0.5) (Eq. 14)"},
+    {DS, TR, [](double x) { return t4_N_to_TR(eq15_to_N(x)); },
+     "Table 3: N = (N_DS - 0.3)/1.174 (Eq. 15), then C_TR = 1.697/sqrt(N + 4.5)"},
+    {TR, B, [](double x) { return 0.8388 * x + 0.7 * std::pow(x, 4); }, "Table 3: m_B = 0.8388 C_TR + 0.7 C_TR^4"},
+    {TR, N, t3_TR_to_N, "Table 3: N = 1.696^2/C_TR^2 - 4.5"},
+    {TR, MG, [](double x) { return 0.8222 * x + 0.82 * x * x * x; }, "Table 3: m_G = 0.8222 C_TR + 0.82 C_TR^3"},
+    {TR, DS, [](double x) { return eq15_to_DS(t3_TR_to_N(x)); },
+     "Table 3: N = 1.696^2/C_TR^2 - 4.5, then N_DS = 1.174 N + 0.3 (Eq. 15)"},
+};
+
+FittedFormula apply(Group a, Group b, double x, bool schlick_as_beckmann) {
+  if (a == b)
+    return {x, schlick_as_beckmann ? "identity (seed 001 §3: Schlick approximates Beckmann for the same m_B)" : "identity",
+            0};
+  for (const SawickiConversion& c : kConversions)
+    if (c.from == a && c.to == b) return {c.convert(x), c.equation, 0};
+  return {std::numeric_limits<double>::quiet_NaN(), "", 0};
+}
+
+}  // namespace
+
+std::optional<FittedFormula> sawicki_formula(const NdfShape& from, double v, const NdfShape& to) {
+  const auto f = sawicki_group(from), t = sawicki_group(to);
+  if (!f || !t) return std::nullopt;
+  FittedFormula out = apply(*f, *t, v, *f == Group::B && from.name != to.name);
+  out.m_B = apply(*f, Group::B, v, false).value;
   return out;
 }
 

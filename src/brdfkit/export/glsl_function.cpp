@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cctype>
-#include <functional>
 #include <map>
 
 #include "brdfkit/core/error.h"
@@ -41,17 +40,16 @@ float bk_beckmann_d(float ch, float a) { float c2 = ch * ch; return exp(-(1.0 - 
 float bk_gtr1(float ch, float a) { float a2 = a * a; return (a2 - 1.0) / (BK_PI * log(a2) * (1.0 + (a2 - 1.0) * ch * ch)); }
 )";
 
-using Body = std::function<std::string()>;
-
 // Each body: statements computing ρ for wi, wo above the horizon (checked before), with
 // h = normalize(wi + wo), ch = h.z, cd = dot(wi, h) already declared.
-const std::map<std::string, Body>& bodies() {
-  static const std::map<std::string, Body> m = {
-      {"lambert", [] { return std::string("  return kd / BK_PI;\n"); }},
-      {"pbrt-diffuse", [] { return std::string("  return reflectance / BK_PI;\n"); }},
-      // models/gltf_metallic_roughness.h
-      {"gltf-metallic-roughness", [] {
-         return std::string(R"(  float a = roughness * roughness, a2 = a * a;
+constexpr const char* kLambert = R"(  return kd / BK_PI;
+)";
+
+constexpr const char* kPbrtDiffuse = R"(  return reflectance / BK_PI;
+)";
+
+// models/gltf_metallic_roughness.h
+constexpr const char* kGltfMetallicRoughness = R"(  float a = roughness * roughness, a2 = a * a;
   float t = ch * ch * (a2 - 1.0) + 1.0;
   float d = a2 / (BK_PI * t * t);
   float vis = 0.5 / (wo.z * sqrt(a2 + (1.0 - a2) * wi.z * wi.z) + wi.z * sqrt(a2 + (1.0 - a2) * wo.z * wo.z));
@@ -63,18 +61,16 @@ const std::map<std::string, Body>& bodies() {
   vec3 dielectric = f * spec + (1.0 - f) * base_color / BK_PI;
   vec3 metal = (base_color + (1.0 - base_color) * w) * spec;
   return (1.0 - metallic) * dielectric + metallic * metal;
-)");
-       }},
-      // models/mitsuba_roughconductor.h
-      {"mitsuba-roughconductor-ggx", [] {
-         return std::string(R"(  float d = bk_ggx_d(ch, alpha);
+)";
+
+// models/mitsuba_roughconductor.h
+constexpr const char* kMitsubaRoughconductorGgx = R"(  float d = bk_ggx_d(ch, alpha);
   if (d * ch <= 1e-20) d = 0.0;
   float g = bk_ggx_g1(wi.z, alpha) * bk_ggx_g1(wo.z, alpha);
   return specular_reflectance * bk_fresnel_conductor(cd, eta, k) * d * g / (4.0 * wi.z * wo.z);
-)");
-       }},
-      {"mitsuba-roughconductor-beckmann", [] {
-         return std::string(R"(  float d = bk_beckmann_d(ch, alpha);
+)";
+
+constexpr const char* kMitsubaRoughconductorBeckmann = R"(  float d = bk_beckmann_d(ch, alpha);
   if (d * ch <= 1e-20) d = 0.0;
   float g = 1.0;
   for (int j = 0; j < 2; ++j) {
@@ -86,11 +82,10 @@ const std::map<std::string, Body>& bodies() {
     }
   }
   return specular_reflectance * bk_fresnel_conductor(cd, eta, k) * d * g / (4.0 * wi.z * wo.z);
-)");
-       }},
-      // models/mitsuba_principled.h
-      {"mitsuba-principled", [] {
-         return std::string(R"(  float eta = 2.0 / (1.0 - sqrt(0.08 * specular)) - 1.0;
+)";
+
+// models/mitsuba_principled.h
+constexpr const char* kMitsubaPrincipled = R"(  float eta = 2.0 / (1.0 - sqrt(0.08 * specular)) - 1.0;
   float w_d = bk_pow5(1.0 - cd);
   vec3 value = vec3(0.0);
   float f_d = bk_fresnel_dielectric(cd, eta);
@@ -114,33 +109,29 @@ const std::map<std::string, Body>& bodies() {
   value += (1.0 - metallic) * base_color / BK_PI * mix(f_diff + f_retro, f_ss, flatness);
   value += sheen * (1.0 - metallic) * w_d;
   return value;
-)");
-       }},
-      // models/pbrt_conductor.h, models/pbrt_mix.h
-      {"pbrt-conductor", [] {
-         return std::string(R"(  float a = sqrt(roughness);
+)";
+
+// models/pbrt_conductor.h, models/pbrt_mix.h
+constexpr const char* kPbrtConductor = R"(  float a = sqrt(roughness);
   float g = 1.0 / (1.0 + bk_ggx_lambda(wo.z, a) + bk_ggx_lambda(wi.z, a));
   return bk_ggx_d(ch, a) * bk_fresnel_conductor(cd, eta, k) * g / (4.0 * wi.z * wo.z);
-)");
-       }},
-      {"pbrt-conductor-reflectance", [] {
-         return std::string(R"(  float a = sqrt(roughness);
+)";
+
+constexpr const char* kPbrtConductorReflectance = R"(  float a = sqrt(roughness);
   vec3 r = min(reflectance, vec3(0.9999));
   float g = 1.0 / (1.0 + bk_ggx_lambda(wo.z, a) + bk_ggx_lambda(wi.z, a));
   return bk_ggx_d(ch, a) * bk_fresnel_conductor(cd, vec3(1.0), 2.0 * sqrt(r) / sqrt(1.0 - r)) * g / (4.0 * wi.z * wo.z);
-)");
-       }},
-      {"pbrt-mix-diffuse-conductor", [] {
-         return std::string(R"(  float a = sqrt(roughness);
+)";
+
+constexpr const char* kPbrtMixDiffuseConductor = R"(  float a = sqrt(roughness);
   vec3 r = min(conductor_reflectance, vec3(0.9999));
   float g = 1.0 / (1.0 + bk_ggx_lambda(wo.z, a) + bk_ggx_lambda(wi.z, a));
   vec3 conductor = bk_ggx_d(ch, a) * bk_fresnel_conductor(cd, vec3(1.0), 2.0 * sqrt(r) / sqrt(1.0 - r)) * g / (4.0 * wi.z * wo.z);
   return (1.0 - amount) * reflectance / BK_PI + amount * conductor;
-)");
-       }},
-      // models/disney_principled.h (BRDF Explorer's disney.brdf)
-      {"disney-principled", [] {
-         return std::string(R"(  vec3 cdlin = pow(baseColor, vec3(2.2));
+)";
+
+// models/disney_principled.h (BRDF Explorer's disney.brdf)
+constexpr const char* kDisneyPrincipled = R"(  vec3 cdlin = pow(baseColor, vec3(2.2));
   vec3 cspec0 = mix(vec3(0.08 * specular), cdlin, metallic);
   float fl = bk_pow5(1.0 - wi.z), fv = bk_pow5(1.0 - wo.z), fh = bk_pow5(1.0 - cd);
   float fd90 = 0.5 + 2.0 * cd * cd * roughness;
@@ -154,15 +145,28 @@ const std::map<std::string, Body>& bodies() {
   float dr = bk_gtr1(ch, mix(0.1, 0.001, clearcoatGloss));
   return (mix(fd, ss, subsurface) * cdlin / BK_PI + fh * sheen) * (1.0 - metallic) + gs * mix(cspec0, vec3(1.0), fh) * bk_ggx_d(ch, a)
          + 0.25 * clearcoat * gr * mix(0.04, 1.0, fh) * dr;
-)");
-       }},
-      // models/cook_torrance.h with Schlick F and uncorrelated Smith G (closed-form Λ)
-      {"cook-torrance-ggx", [] {
-         return std::string(R"(  vec3 f = F0 + (1.0 - F0) * bk_pow5(1.0 - cd);
+)";
+
+// models/cook_torrance.h with Schlick F and uncorrelated Smith G (closed-form Λ)
+constexpr const char* kCookTorranceGgx = R"(  vec3 f = F0 + (1.0 - F0) * bk_pow5(1.0 - cd);
   float g = bk_ggx_g1(wi.z, alpha) * bk_ggx_g1(wo.z, alpha);
   return kd / BK_PI + ks * f * bk_ggx_d(ch, alpha) * g / (4.0 * wi.z * wo.z);
-)");
-       }},
+)";
+
+// Model name → its body; the models listed are the ones with a GLSL form.
+const std::map<std::string, const char*>& bodies() {
+  static const std::map<std::string, const char*> m = {
+      {"lambert", kLambert},
+      {"pbrt-diffuse", kPbrtDiffuse},
+      {"gltf-metallic-roughness", kGltfMetallicRoughness},
+      {"mitsuba-roughconductor-ggx", kMitsubaRoughconductorGgx},
+      {"mitsuba-roughconductor-beckmann", kMitsubaRoughconductorBeckmann},
+      {"mitsuba-principled", kMitsubaPrincipled},
+      {"pbrt-conductor", kPbrtConductor},
+      {"pbrt-conductor-reflectance", kPbrtConductorReflectance},
+      {"pbrt-mix-diffuse-conductor", kPbrtMixDiffuseConductor},
+      {"disney-principled", kDisneyPrincipled},
+      {"cook-torrance-ggx", kCookTorranceGgx},
   };
   return m;
 }
@@ -198,7 +202,7 @@ std::string glsl_functions(const Model& model) {
   }
   return std::string(kHelpers) + "vec3 brdfkit_brdf(vec3 wi, vec3 wo) {\n" +
          "  if (wi.z <= 0.0 || wo.z <= 0.0) return vec3(0.0);\n" +
-         "  vec3 h = normalize(wi + wo);\n  float ch = h.z, cd = dot(wi, h);\n" + it->second() + "}\n" +
+         "  vec3 h = normalize(wi + wo);\n  float ch = h.z, cd = dot(wi, h);\n" + it->second + "}\n" +
          "vec3 brdfkit_brdf(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n"
          "  return brdfkit_brdf(vec3(dot(L, X), dot(L, Y), dot(L, N)), vec3(dot(V, X), dot(V, Y), dot(V, N)));\n}\n";
 }

@@ -32,21 +32,26 @@ void check_spectral_values(std::span<const double> values, const std::vector<dou
                                           wavelengths[j], values[j], kMaxMeasuredValue));
 }
 
-}  // namespace
+// What a Cornell text file holds: the header's wavelengths, then per sample line θi φi θs φs and
+// the spectral values.
+struct CornellText {
+  std::vector<double> wavelengths;
+  std::vector<std::array<double, 4>> angles;
+  std::vector<std::vector<double>> spectra;
+};
 
-CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesystem::path& cie_dir) : path_(file.string()) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(path_, "cannot open file");
+// Parses and checks every line; InputError naming the file and line.
+CornellText read_text(std::istream& in, const std::string& path) {
+  CornellText t;
   std::string line;
   int line_no = 0;
   size_t n_wl = 0;
-  std::vector<std::array<double, 4>> angles;
   while (std::getline(in, line)) {
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();  // CRLF files
     const auto first = line.find_first_not_of(" \t");
     if (first == std::string::npos || line[first] == '#') continue;
-    const std::string where = fmt::format("{}:{}", path_, line_no);
+    const std::string where = fmt::format("{}:{}", path, line_no);
     const std::vector<double> v = parse_numbers(line, where);
     if (n_wl == 0) {  // header: the wavelength count
       if (v.size() != 1 || v[0] < 1 || v[0] > 10000 || v[0] != std::floor(v[0]))
@@ -54,9 +59,9 @@ CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesyste
       n_wl = size_t(v[0]);
       continue;
     }
-    if (wavelengths_.size() < n_wl) {  // header: the wavelengths, over one or more lines
-      wavelengths_.insert(wavelengths_.end(), v.begin(), v.end());
-      if (wavelengths_.size() > n_wl)
+    if (t.wavelengths.size() < n_wl) {  // header: the wavelengths, over one or more lines
+      t.wavelengths.insert(t.wavelengths.end(), v.begin(), v.end());
+      if (t.wavelengths.size() > n_wl)
         throw InputError(where, fmt::format("more wavelengths than the {} announced", n_wl));
       continue;
     }
@@ -65,34 +70,52 @@ CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesyste
                                           4 + n_wl, n_wl));
     if (v[0] < 0 || v[0] >= kPi / 2 || v[2] < 0 || v[2] >= kPi / 2)
       throw InputError(where, fmt::format("angles out of range: θi = {}, θs = {} (radians, in [0, π/2))", v[0], v[2]));
-    check_spectral_values(std::span(v).subspan(4), wavelengths_, where);
-    angles.push_back({v[0], v[1], v[2], v[3]});
-    spectra_.emplace_back(v.begin() + 4, v.end());
+    check_spectral_values(std::span(v).subspan(4), t.wavelengths, where);
+    t.angles.push_back({v[0], v[1], v[2], v[3]});
+    t.spectra.emplace_back(v.begin() + 4, v.end());
   }
-  if (n_wl == 0) throw InputError(path_, "no wavelength count found (empty file?)");
-  if (wavelengths_.size() < n_wl) throw InputError(path_, fmt::format("only {} of the {} wavelengths", wavelengths_.size(), n_wl));
+  if (n_wl == 0) throw InputError(path, "no wavelength count found (empty file?)");
+  if (t.wavelengths.size() < n_wl) throw InputError(path, fmt::format("only {} of the {} wavelengths", t.wavelengths.size(), n_wl));
   for (size_t j = 1; j < n_wl; ++j)
-    if (!(wavelengths_[j] > wavelengths_[j - 1])) throw InputError(path_, "wavelengths must increase");
-  if (spectra_.empty()) throw InputError(path_, "no samples");
+    if (!(t.wavelengths[j] > t.wavelengths[j - 1])) throw InputError(path, "wavelengths must increase");
+  if (t.spectra.empty()) throw InputError(path, "no samples");
+  return t;
+}
+
+// Solid-angle weights (see the header): samples per (θi, ring), then band area / count.
+std::vector<double> solid_angle_weights(const std::vector<std::array<double, 4>>& angles) {
+  std::map<std::pair<long, int>, int> per_ring;
+  auto key = [](const std::array<double, 4>& a) { return std::pair{std::lround(a[0] * 1e5), ring_of(a[2])}; };
+  for (const auto& a : angles) ++per_ring[key(a)];
+  auto band_edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
+  std::vector<double> w;
+  w.reserve(angles.size());
+  for (const auto& a : angles) {
+    const int ring = std::min(ring_of(a[2]), 9);
+    w.push_back(2 * kPi * (band_edge(ring + 1) - band_edge(ring)) / per_ring[key(a)]);
+  }
+  return w;
+}
+
+}  // namespace
+
+CornellBrdf::CornellBrdf(const std::filesystem::path& file, const std::filesystem::path& cie_dir) : path_(file.string()) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(path_, "cannot open file");
+  CornellText text = read_text(in, path_);
+  wavelengths_ = std::move(text.wavelengths);
+  spectra_ = std::move(text.spectra);
 
   std::unique_ptr<SpectrumToRgb> own;
   if (!cie_dir.empty()) own = std::make_unique<SpectrumToRgb>(cie_dir);
   const SpectrumToRgb& conv = own ? *own : default_spectrum_to_rgb();
   const Eigen::MatrixXd m = conv.matrix(wavelengths_);
-
-  // Solid-angle weights (see the header): samples per (θi, ring), then band area / count.
-  std::map<std::pair<long, int>, int> per_ring;
-  auto key = [](const std::array<double, 4>& a) { return std::pair{std::lround(a[0] * 1e5), ring_of(a[2])}; };
-  for (const auto& a : angles) ++per_ring[key(a)];
-  auto band_edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
-
-  samples_.reserve(angles.size());
-  for (size_t k = 0; k < angles.size(); ++k) {
-    const auto& a = angles[k];
-    const int ring = std::min(ring_of(a[2]), 9);
-    const double weight = 2 * kPi * (band_edge(ring + 1) - band_edge(ring)) / per_ring[key(a)];
-    const Eigen::Vector3d rgb = m * Eigen::Map<const Eigen::VectorXd>(spectra_[k].data(), Eigen::Index(n_wl));
-    samples_.push_back(spherical_direction(a[0], a[1]), spherical_direction(a[2], a[3]), rgb.array(), weight, true);
+  const std::vector<double> weights = solid_angle_weights(text.angles);
+  samples_.reserve(text.angles.size());
+  for (size_t k = 0; k < text.angles.size(); ++k) {
+    const auto& a = text.angles[k];
+    const Eigen::Vector3d rgb = m * Eigen::Map<const Eigen::VectorXd>(spectra_[k].data(), Eigen::Index(wavelengths_.size()));
+    samples_.push_back(spherical_direction(a[0], a[1]), spherical_direction(a[2], a[3]), rgb.array(), weights[k], true);
   }
 }
 

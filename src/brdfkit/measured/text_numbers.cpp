@@ -1,6 +1,5 @@
 #include "brdfkit/measured/text_numbers.h"
 
-#include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>

@@ -29,96 +29,114 @@ struct HeSeriesStats {
   double omitted_bound = 0;   // upper bound on Σ of the omitted terms, relative to the sum
 };
 
-// Σ t_m of He et al. 1991 Eq. 78 (without its π²τ²/(4λ²) prefactor), g ≥ 0, c ≥ 0.
-// T is double or a ceres::Jet: the walk is steered by the values, the terms carry derivatives.
-template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, HeSeriesStats* stats = nullptr) {
+namespace he_detail {
+
+inline constexpr int kMaxTerms = 1000000;  // never reached for g within the model's bounds (g < 10⁴)
+
+// The sum so far and the bounds on what each walk has left out.
+template <class T> struct Walk {
+  T sum;
+  int terms = 1;
+  double up_bound = std::numeric_limits<double>::infinity(), down_bound = 0;
+};
+
+// Doubles walk by the term ratios (one exp per term instead of lgamma, log and exp): the product
+// of ≤ a few hundred ratios is exact to ~1e-13, far inside rel_tol. Every term is ≤ 1, so from a
+// normal first term no ratio overflows.
+inline void walk_by_ratios(double g, double c, int start, double rel_tol, Walk<double>& w) {
+  const double first = w.sum;
+  double t = first;
+  for (int m = start; w.terms < kMaxTerms; ++m) {
+    const double md = m, m1 = m + 1.0;
+    const double r = g * md / (m1 * m1) * std::exp(c / (md * m1));  // r_m = t_{m+1}/t_m
+    if (r < 1) {
+      w.up_bound = t * r / (1 - r);
+      if (w.up_bound <= 0.5 * rel_tol * w.sum) break;
+    }
+    t *= r;
+    w.sum += t;
+    ++w.terms;
+  }
+  t = first;
+  for (int m = start; m > 1 && w.terms < kMaxTerms; --m) {
+    const double md = m, m0 = m - 1.0;
+    const double q = md * md / (g * m0);  // bounds t_{j−1}/t_j for every j ≤ m
+    if (q < 1) {
+      w.down_bound = t * q / (1 - q);
+      if (w.down_bound <= 0.5 * rel_tol * w.sum) break;
+    }
+    t *= q * std::exp(-c / (md * m0));  // t_{m−1}/t_m
+    w.sum += t;
+    ++w.terms;
+    w.down_bound = 0;  // reaching m = 1 leaves nothing below
+  }
+}
+
+// Every term in log space: Jets, and doubles whose first term is near underflow (c ≫ m).
+template <class T> void walk_by_logs(const T& g, const T& c, int start, double rel_tol, Walk<T>& w) {
   using std::exp;
   using std::log;
-  const double gv = value_of(g), cv = value_of(c);
-  if (!(gv > 0)) {
-    if (stats) *stats = {0, 0.0};
-    return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
-  }
   const T log_g = log(g);
   auto log_term = [&](int m) { return -g + double(m) * log_g - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m); };
-  const double lgv = std::log(gv);
+  const double lgv = std::log(value_of(g)), cv = value_of(c);
   // log r_m (up) and log q_m (down), in doubles: they only steer the walk.
   auto log_up_ratio = [&](int m) { return lgv + std::log(double(m)) - 2 * std::log(m + 1.0) + cv / (double(m) * (m + 1.0)); };
   auto log_down_ratio = [&](int m) { return 2 * std::log(double(m)) - lgv - std::log(m - 1.0); };
   // Geometric tail t·r/(1 − r) for log r < 0.
   auto tail = [](double t, double log_r) { const double r = std::exp(log_r); return t * r / (1 - r); };
-
-  const int kMaxTerms = 1000000;  // never reached for g within the model's bounds (g < 10⁴)
-  const int start = std::max(1, int(std::lround(gv)));
-  const T first = exp(log_term(start));
-  T sum = first;
-  int terms = 1;
-  double up_bound = std::numeric_limits<double>::infinity(), down_bound = 0;
-  // Doubles walk by the term ratios (one exp per term instead of lgamma, log and exp): the product
-  // of ≤ a few hundred ratios is exact to ~1e-13, far inside rel_tol. Every term is ≤ 1, so from a
-  // normal first term no ratio overflows; a first term near underflow (c ≫ m) takes the log walk.
-  bool by_ratios = false;
-  if constexpr (std::is_same_v<T, double>) {
-    by_ratios = first > 1e-280;
-    double t = first;
-    for (int m = start; by_ratios && terms < kMaxTerms; ++m) {
-      const double md = m, m1 = m + 1.0;
-      const double r = gv * md / (m1 * m1) * std::exp(cv / (md * m1));  // r_m = t_{m+1}/t_m
-      if (r < 1) {
-        up_bound = t * r / (1 - r);
-        if (up_bound <= 0.5 * rel_tol * sum) break;
-      }
-      t *= r;
-      sum += t;
-      ++terms;
+  const T first = w.sum;
+  T t = first;
+  for (int m = start; w.terms < kMaxTerms; ++m) {
+    const double lr = log_up_ratio(m);
+    if (lr < 0) {
+      w.up_bound = tail(value_of(t), lr);
+      if (w.up_bound <= 0.5 * rel_tol * value_of(w.sum)) break;
     }
-    t = first;
-    for (int m = start; by_ratios && m > 1 && terms < kMaxTerms; --m) {
-      const double md = m, m0 = m - 1.0;
-      const double q = md * md / (gv * m0);  // bounds t_{j−1}/t_j for every j ≤ m
-      if (q < 1) {
-        down_bound = t * q / (1 - q);
-        if (down_bound <= 0.5 * rel_tol * sum) break;
-      }
-      t *= q * std::exp(-cv / (md * m0));  // t_{m−1}/t_m
-      sum += t;
-      ++terms;
-      down_bound = 0;  // reaching m = 1 leaves nothing below
-    }
+    t = exp(log_term(m + 1));
+    w.sum += t;
+    ++w.terms;
   }
-  if (!by_ratios) {
-    // Upwards.
-    T t = first;
-    for (int m = start; terms < kMaxTerms; ++m) {
-      const double lr = log_up_ratio(m);
-      if (lr < 0) {
-        up_bound = tail(value_of(t), lr);
-        if (up_bound <= 0.5 * rel_tol * value_of(sum)) break;
-      }
-      t = exp(log_term(m + 1));
-      sum += t;
-      ++terms;
+  t = first;
+  for (int m = start; m > 1 && w.terms < kMaxTerms; --m) {
+    const double lq = log_down_ratio(m);
+    if (lq < 0) {
+      w.down_bound = tail(value_of(t), lq);
+      if (w.down_bound <= 0.5 * rel_tol * value_of(w.sum)) break;
     }
-    // Downwards.
-    t = first;
-    for (int m = start; m > 1 && terms < kMaxTerms; --m) {
-      const double lq = log_down_ratio(m);
-      if (lq < 0) {
-        down_bound = tail(value_of(t), lq);
-        if (down_bound <= 0.5 * rel_tol * value_of(sum)) break;
-      }
-      t = exp(log_term(m - 1));
-      sum += t;
-      ++terms;
-      down_bound = 0;
-    }
+    t = exp(log_term(m - 1));
+    w.sum += t;
+    ++w.terms;
+    w.down_bound = 0;
+  }
+}
+
+}  // namespace he_detail
+
+// Σ t_m of He et al. 1991 Eq. 78 (without its π²τ²/(4λ²) prefactor), g ≥ 0, c ≥ 0.
+// T is double or a ceres::Jet: the walk is steered by the values, the terms carry derivatives.
+template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, HeSeriesStats* stats = nullptr) {
+  using std::exp;
+  using std::log;
+  const double gv = value_of(g);
+  if (!(gv > 0)) {
+    if (stats) *stats = {0, 0.0};
+    return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
+  }
+  const int start = std::max(1, int(std::lround(gv)));
+  he_detail::Walk<T> w{exp(-g + double(start) * log(g) - std::lgamma(start + 1.0) - std::log(double(start)) -
+                           c / double(start))};
+  if constexpr (std::is_same_v<T, double>) {
+    if (w.sum > 1e-280) he_detail::walk_by_ratios(gv, value_of(c), start, rel_tol, w);
+    else he_detail::walk_by_logs(g, c, start, rel_tol, w);
+  } else {
+    he_detail::walk_by_logs(g, c, start, rel_tol, w);
   }
   if (stats) {
-    const double s = value_of(sum);
-    stats->terms = terms;
-    stats->omitted_bound = s > 0 ? (up_bound + down_bound) / s : 0.0;
+    const double s = value_of(w.sum);
+    stats->terms = w.terms;
+    stats->omitted_bound = s > 0 ? (w.up_bound + w.down_bound) / s : 0.0;
   }
-  return sum;
+  return w.sum;
 }
 
 }  // namespace brdfkit

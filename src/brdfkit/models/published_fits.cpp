@@ -153,6 +153,44 @@ std::vector<std::string> PublishedFits::materials() const {
   return names;
 }
 
+namespace {
+
+// The specular lobe `name` of a published file (parameters `p`) into the model's values, with the
+// file's conventions (DESIGN.md §10). False for a lobe this converter does not know.
+bool put_lobe(ParamValues& v, const Model& m, const std::string& name, const nlohmann::json& p, const std::string& lwhere) {
+  if (name == "LowSmooth") {
+    for (const char* k : {"A", "B", "C", "eta"}) put(v, m, k, channels(p, k, lwhere));
+  } else if (name == "LowAshikhminShirley") {
+    put(v, m, "ks", channels(p, "albedo", lwhere));
+    put(v, m, "N", channels(p, "sharpness", lwhere));
+    put(v, m, "eta", channels(p, "fresnelReflectance", lwhere));
+  } else if (name == "LowCookTorrance") {
+    // albedo·D'·G·F/(π ci co) with D' = π D_Beckmann (no 1/π in the file's D) = 4·albedo · D F G/(4 ci co).
+    put(v, m, "ks", scaled(channels(p, "albedo", lwhere), 4.0));
+    put(v, m, "alpha", channels(p, "roughness", lwhere));
+    put(v, m, "eta", channels(p, "eta", lwhere));
+  } else if (name == "LowMicrofacetFit") {
+    // conventions: A[c]·S·G·F/(π ci co); seed 003 Eq. 15 (the model) has no 1/π, so A = A[c]/π.
+    put(v, m, "A", scaled(channels(p, "A", lwhere), kInvPi));
+    for (const char* k : {"B", "C", "eta"}) put(v, m, k, channels(p, k, lwhere));
+  } else if (name == "Bagher") {
+    // albedo·D·G·F/(π ci co) (seed 000 Eq. 1, normalized D) = (4 albedo/π) · D F G/(4 ci co).
+    put(v, m, "ks", scaled(channels(p, "albedo", lwhere), 4.0 * kInvPi));
+    put(v, m, "alpha", channels(p, "alpha", lwhere));
+    put(v, m, "p", channels(p, "p", lwhere));
+    if (!p.contains("eta") || !p["eta"].is_array() || p["eta"].size() != 2)
+      throw InputError(lwhere, "parameter 'eta' is not a pair [F0[3], F1[3]]");
+    nlohmann::json f{{"F0", p["eta"][0]}, {"F1", p["eta"][1]}};
+    put(v, m, "F0", channels(f, "F0", lwhere + " eta[0]"));
+    put(v, m, "F1", channels(f, "F1", lwhere + " eta[1]"));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 Brdf PublishedFits::brdf(const std::string& material) const {
   const std::string where = file_.string();
   if (!supported()) throw InputError(where, "unsupported: " + reason_);
@@ -168,45 +206,11 @@ Brdf PublishedFits::brdf(const std::string& material) const {
     if (!lobe.is_object() || !lobe.contains("params") || !lobe["params"].is_object())
       throw InputError(mwhere, "a lobe without a 'params' object");
     const std::string name = lobe_name(lobe, mwhere);
-    const auto& p = lobe["params"];
     const std::string lwhere = mwhere + ", lobe '" + name + "'";
     if (name == "Lambertian") {
-      put(v, *m, "kd", channels(p, "albedo", lwhere));  // conventions: albedo[c]/π
+      put(v, *m, "kd", channels(lobe["params"], "albedo", lwhere));  // conventions: albedo[c]/π
       have_diffuse = true;
-    } else if (name == lobe_ && name == "LowSmooth") {
-      put(v, *m, "A", channels(p, "A", lwhere));
-      put(v, *m, "B", channels(p, "B", lwhere));
-      put(v, *m, "C", channels(p, "C", lwhere));
-      put(v, *m, "eta", channels(p, "eta", lwhere));
-      have_lobe = true;
-    } else if (name == lobe_ && name == "LowAshikhminShirley") {
-      put(v, *m, "ks", channels(p, "albedo", lwhere));
-      put(v, *m, "N", channels(p, "sharpness", lwhere));
-      put(v, *m, "eta", channels(p, "fresnelReflectance", lwhere));
-      have_lobe = true;
-    } else if (name == lobe_ && name == "LowCookTorrance") {
-      // albedo·D'·G·F/(π ci co) with D' = π D_Beckmann (no 1/π in the file's D) = 4·albedo · D F G/(4 ci co).
-      put(v, *m, "ks", scaled(channels(p, "albedo", lwhere), 4.0));
-      put(v, *m, "alpha", channels(p, "roughness", lwhere));
-      put(v, *m, "eta", channels(p, "eta", lwhere));
-      have_lobe = true;
-    } else if (name == lobe_ && name == "LowMicrofacetFit") {
-      // conventions: A[c]·S·G·F/(π ci co); seed 003 Eq. 15 (the model) has no 1/π, so A = A[c]/π.
-      put(v, *m, "A", scaled(channels(p, "A", lwhere), kInvPi));
-      put(v, *m, "B", channels(p, "B", lwhere));
-      put(v, *m, "C", channels(p, "C", lwhere));
-      put(v, *m, "eta", channels(p, "eta", lwhere));
-      have_lobe = true;
-    } else if (name == lobe_ && name == "Bagher") {
-      // albedo·D·G·F/(π ci co) (seed 000 Eq. 1, normalized D) = (4 albedo/π) · D F G/(4 ci co).
-      put(v, *m, "ks", scaled(channels(p, "albedo", lwhere), 4.0 * kInvPi));
-      put(v, *m, "alpha", channels(p, "alpha", lwhere));
-      put(v, *m, "p", channels(p, "p", lwhere));
-      if (!p.contains("eta") || !p["eta"].is_array() || p["eta"].size() != 2)
-        throw InputError(lwhere, "parameter 'eta' is not a pair [F0[3], F1[3]]");
-      nlohmann::json f{{"F0", p["eta"][0]}, {"F1", p["eta"][1]}};
-      put(v, *m, "F0", channels(f, "F0", lwhere + " eta[0]"));
-      put(v, *m, "F1", channels(f, "F1", lwhere + " eta[1]"));
+    } else if (name == lobe_ && put_lobe(v, *m, name, lobe["params"], lwhere)) {
       have_lobe = true;
     } else {
       throw InputError(lwhere, "unexpected lobe in a '" + lobe_ + "' file");

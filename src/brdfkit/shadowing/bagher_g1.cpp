@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "brdfkit/core/dense_solver_options.h"
 #include "brdfkit/core/error.h"
 
 namespace brdfkit {
@@ -51,26 +52,26 @@ std::vector<double> bagher_g1_angles(int n) {
   return t;
 }
 
-BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double> g1) {
+namespace {
+
+void check_inputs(std::span<const double> theta, std::span<const double> g1) {
   if (theta.empty()) throw InputError("fit_bagher_g1", "no angles to fit");
   if (theta.size() != g1.size()) throw InputError("fit_bagher_g1", "angles and G1 values differ in count");
   for (size_t j = 0; j < theta.size(); ++j)
     if (!std::isfinite(theta[j]) || !std::isfinite(g1[j]))
       throw InputError("fit_bagher_g1", "non-finite angle or G1 value at index " + std::to_string(j));
+}
 
-  // Where G1 starts to drop sets the scale of w = π/2 − θ0 for the starts.
-  double theta_drop = kPi / 2;
-  for (size_t j = 0; j < theta.size(); ++j)
-    if (g1[j] < 1.0 - 1e-4) theta_drop = std::min(theta_drop, theta[j]);
-  const double w_drop = std::max(1e-3, kPi / 2 - theta_drop);
+struct Start {
+  double ss;
+  double x[3];  // log λ, w, log k
+};
 
-  // Global search first: the sum of squares has separate basins (small λ with k ≈ 1–3, large λ
-  // with k ≈ 10–50 and θ0 < 0, both seen in the published fits), so a coarse grid over
-  // (log λ, w, log k) picks the starts and Levenberg-Marquardt polishes the best few.
-  struct Start {
-    double ss;
-    double x[3];
-  };
+// The sum of squares has separate basins (small λ with k ≈ 1–3, large λ with k ≈ 10–50 and
+// θ0 < 0, both seen in the published fits): the best few points of a coarse grid over
+// (log λ, w, log k), plus fixed starts in both basins scaled by where G1 starts to drop
+// (neither set alone always finds the best minimum: sums differ up to 4× on published materials).
+std::vector<Start> starts(std::span<const double> theta, std::span<const double> g1, double w_drop) {
   std::vector<Start> grid;
   for (int a = 0; a <= 14; ++a)
     for (int b = 0; b <= 8; ++b)
@@ -86,38 +87,44 @@ BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double>
   std::partial_sort(grid.begin(), grid.begin() + n_grid, grid.end(),
                     [](const Start& l, const Start& r) { return l.ss < r.ss; });
   grid.resize(n_grid);
-  // Plus fixed starts in both basins, scaled by where G1 starts to drop: neither set alone always
-  // finds the best minimum (sums differ up to 4× on published materials).
   for (double lam0 : {0.3, 2.0, 20.0})
     for (double k0 : {1.5, 4.0, 20.0})
       for (double wf : {1.2, 2.0}) grid.push_back(Start{0, {std::log(lam0), std::min(4.0, wf * w_drop), std::log(k0)}});
-  const size_t n_starts = grid.size();
+  return grid;
+}
+
+// Levenberg-Marquardt from x, in place.
+void polish(double* x, std::span<const double> theta, std::span<const double> g1) {
+  ceres::Problem problem;
+  for (size_t j = 0; j < theta.size(); ++j)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, 3>(new Residual{theta[j], g1[j]}), nullptr, x);
+  problem.SetParameterLowerBound(x, 0, std::log(1e-8));
+  problem.SetParameterUpperBound(x, 0, std::log(1e8));
+  // w and k may both grow large together (θ0 far below 0, k/w finite: the exp(−a(π/2 − θ))
+  // limit of Eq. 9); a bound w ≤ 4 would be active at some grid points (θ0 = −2.4292).
+  problem.SetParameterLowerBound(x, 1, 1e-6);
+  problem.SetParameterUpperBound(x, 1, kMaxW);
+  problem.SetParameterLowerBound(x, 2, std::log(0.2));
+  problem.SetParameterUpperBound(x, 2, std::log(1e5));
+  ceres::Solver::Summary summary;
+  ceres::Solve(dense_solver_options(500, {.function = 1e-16, .gradient = 1e-20, .parameter = 1e-15}), &problem, &summary);
+}
+
+}  // namespace
+
+BagherG1Fit fit_bagher_g1(std::span<const double> theta, std::span<const double> g1) {
+  check_inputs(theta, g1);
+  // Where G1 starts to drop sets the scale of w = π/2 − θ0 for the starts.
+  double theta_drop = kPi / 2;
+  for (size_t j = 0; j < theta.size(); ++j)
+    if (g1[j] < 1.0 - 1e-4) theta_drop = std::min(theta_drop, theta[j]);
+  const double w_drop = std::max(1e-3, kPi / 2 - theta_drop);
 
   double best[3] = {0, w_drop, std::log(2.0)};
   double best_ss = std::numeric_limits<double>::infinity();
-  for (size_t s0 = 0; s0 < n_starts; ++s0) {
-    double x[3] = {grid[s0].x[0], grid[s0].x[1], grid[s0].x[2]};
-    ceres::Problem problem;
-    for (size_t j = 0; j < theta.size(); ++j)
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, 3>(new Residual{theta[j], g1[j]}), nullptr,
-                               x);
-    problem.SetParameterLowerBound(x, 0, std::log(1e-8));
-    problem.SetParameterUpperBound(x, 0, std::log(1e8));
-    // w and k may both grow large together (θ0 far below 0, k/w finite: the exp(−a(π/2 − θ))
-    // limit of Eq. 9): the old bound w ≤ 4 was active at some grid points (θ0 = −2.4292).
-    problem.SetParameterLowerBound(x, 1, 1e-6);
-    problem.SetParameterUpperBound(x, 1, kMaxW);
-    problem.SetParameterLowerBound(x, 2, std::log(0.2));
-    problem.SetParameterUpperBound(x, 2, std::log(1e5));
-    ceres::Solver::Options options;
-    options.linear_solver_type = ceres::DENSE_QR;
-    options.max_num_iterations = 500;
-    options.function_tolerance = 1e-16;
-    options.parameter_tolerance = 1e-15;
-    options.gradient_tolerance = 1e-20;
-    options.logging_type = ceres::SILENT;
-    ceres::Solver::Summary summary;
-    ceres::Solve(options, &problem, &summary);
+  for (const Start& start : starts(theta, g1, w_drop)) {
+    double x[3] = {start.x[0], start.x[1], start.x[2]};
+    polish(x, theta, g1);
     const double ss = sum_sq(x, theta, g1);
     if (std::isfinite(ss) && ss < best_ss) {
       best_ss = ss;

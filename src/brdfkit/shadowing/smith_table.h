@@ -118,16 +118,26 @@ class SmithLambdaTable {
     catmull_rom(T(x - T(double(i))), w);
     return i;  // padded entries i .. i+3 = real nodes i−1 .. i+2
   }
-  // Scalar access for the template below (Node is defined in the .cpp).
+  // Scalar access for the templates below (Node is defined in the .cpp).
   static double log_width_of(const Node& n);
   static const double* row_of(const Node& n);
+
+  // The (up to 4^d) parameter nodes around some coordinates and their weights.
+  template <class T> struct Term {
+    T weight;
+    const Node* node;
+  };
+  template <class T> using Stencil = std::array<Term<T>, 64>;
+  // Fills `terms` for `coords`; returns how many. Folded edge weights that are structurally zero
+  // are skipped, so no node outside the stencil is ever built.
+  template <class T> int stencil(const T* coords, Stencil<T>& terms) const;
+  // log Λ at v = log(tanθ − t_edge) − log t½ from the stencil's rows: Catmull-Rom inside the
+  // table, linear beyond it.
+  template <class T> T log_lambda_at(const Stencil<T>& terms, int n_terms, const T& v) const;
 };
 
-template <class T> T SmithLambdaTable::lambda(const T* coords, const T& tan_theta, const T& t_edge) const {
-  using std::exp;
+template <class T> int SmithLambdaTable::stencil(const T* coords, Stencil<T>& terms) const {
   using std::log;
-  const T dt = tan_theta - t_edge;
-  if (!(smith_detail::scalar(tan_theta) > 0.0) || !(smith_detail::scalar(dt) > 0.0)) return T(0);
   const int d = dims();
   int base[kMaxDims] = {0, 0, 0}, zero_slot[kMaxDims] = {-1, -1, -1};
   T w[kMaxDims][4];
@@ -137,13 +147,6 @@ template <class T> T SmithLambdaTable::lambda(const T* coords, const T& tan_thet
                             : T((coords[k] - a.lo) / (a.hi - a.lo));
     base[k] = axis_weights(T(u * double(a.n - 1)), a.n, w[k], &zero_slot[k]);
   }
-  // The (up to 4^d) parameter nodes around the coordinates and their weights. Folded edge weights
-  // that are structurally zero are skipped, so no node outside the stencil is ever built.
-  struct Term {
-    T weight;
-    const Node* node;
-  };
-  std::array<Term, 64> terms;
   int n_terms = 0;
   const int combos = 1 << (2 * d);
   for (int c = 0; c < combos; ++c) {
@@ -156,11 +159,12 @@ template <class T> T SmithLambdaTable::lambda(const T* coords, const T& tan_thet
       flat = flat * size_t(axes_[k].n) + size_t(base[k] + o);
       wt = wt * w[k][o];
     }
-    if (!skip) terms[n_terms++] = Term{wt, &node(flat)};
+    if (!skip) terms[n_terms++] = Term<T>{wt, &node(flat)};
   }
-  T log_width(0);
-  for (int j = 0; j < n_terms; ++j) log_width += terms[j].weight * log_width_of(*terms[j].node);
-  const T v = log(dt) - log_width;
+  return n_terms;
+}
+
+template <class T> T SmithLambdaTable::log_lambda_at(const Stencil<T>& terms, int n_terms, const T& v) const {
   const int real_nv = nv_ - 2;
   const T xv = (v - T(kVLo)) / T(kVStep);
   // log Λ at real v node jv, interpolated over the parameters.
@@ -170,24 +174,35 @@ template <class T> T SmithLambdaTable::lambda(const T* coords, const T& tan_thet
     return s;
   };
   const double xs = smith_detail::scalar(xv);
-  T log_lambda;
   if (xs < 0.0) {
     const T f0 = at_node(0), f1 = at_node(1);
-    log_lambda = f0 + (f1 - f0) * xv;
-  } else if (xs > real_nv - 1) {
+    return f0 + (f1 - f0) * xv;
+  }
+  if (xs > real_nv - 1) {
     const int last = real_nv - 1;
     const T f0 = at_node(last - 1), f1 = at_node(last);
-    log_lambda = f1 + (f1 - f0) * (xv - T(double(last)));
-  } else {
-    T wv[4];
-    const int iv = v_cell(xv, real_nv, wv);
-    log_lambda = T(0);
-    for (int j = 0; j < n_terms; ++j) {
-      const double* p = row_of(*terms[j].node) + iv;
-      log_lambda += terms[j].weight * (wv[0] * p[0] + wv[1] * p[1] + wv[2] * p[2] + wv[3] * p[3]);
-    }
+    return f1 + (f1 - f0) * (xv - T(double(last)));
   }
-  return exp(log_lambda);
+  T wv[4];
+  const int iv = v_cell(xv, real_nv, wv);
+  T log_lambda(0);
+  for (int j = 0; j < n_terms; ++j) {
+    const double* p = row_of(*terms[j].node) + iv;
+    log_lambda += terms[j].weight * (wv[0] * p[0] + wv[1] * p[1] + wv[2] * p[2] + wv[3] * p[3]);
+  }
+  return log_lambda;
+}
+
+template <class T> T SmithLambdaTable::lambda(const T* coords, const T& tan_theta, const T& t_edge) const {
+  using std::exp;
+  using std::log;
+  const T dt = tan_theta - t_edge;
+  if (!(smith_detail::scalar(tan_theta) > 0.0) || !(smith_detail::scalar(dt) > 0.0)) return T(0);
+  Stencil<T> terms;
+  const int n_terms = stencil(coords, terms);
+  T log_width(0);
+  for (int j = 0; j < n_terms; ++j) log_width += terms[j].weight * log_width_of(*terms[j].node);
+  return exp(log_lambda_at(terms, n_terms, T(log(dt) - log_width)));
 }
 
 }  // namespace brdfkit

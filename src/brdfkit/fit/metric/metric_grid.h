@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "brdfkit/core/pair_arrays.h"
 #include "brdfkit/measured/measured_brdf.h"
 
 namespace brdfkit::fit {
@@ -25,20 +26,14 @@ struct GridSpec {
 };
 
 // Samples of one θi node, SoA so evaluation loops vectorize (DESIGN.md §12).
-struct MetricChunk {
-  std::vector<double> wi_x, wi_y, wi_z, wo_x, wo_y, wo_z;
+struct MetricChunk : PairArrays {
   std::vector<double> sqrt_weight;  // square root of the quadrature weight
   std::vector<double> factor;       // multiplies ρ (model and measured) before the transform
   std::array<std::vector<double>, 3> measured;
   size_t size() const { return sqrt_weight.size(); }
   // Appends one sample of quadrature weight `weight` (its square root is kept).
   void push(const Vec3d& wi, const Vec3d& wo, double weight, double f, const Rgb& m) {
-    wi_x.push_back(wi.x());
-    wi_y.push_back(wi.y());
-    wi_z.push_back(wi.z());
-    wo_x.push_back(wo.x());
-    wo_y.push_back(wo.y());
-    wo_z.push_back(wo.z());
+    push_pair(wi, wo);
     sqrt_weight.push_back(std::sqrt(weight));
     factor.push_back(f);
     for (int c = 0; c < 3; ++c) measured[size_t(c)].push_back(m[c]);

@@ -22,6 +22,7 @@
 #include <limits>
 #include <random>
 
+#include "brdfkit/core/dense_solver_options.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/engine/random_start.h"
 #include "brdfkit/fit/procedure/procedure_steps.h"
@@ -116,15 +117,9 @@ StepResult fit_slice(const Model& model, int c, std::vector<double>& p, const st
       problem.SetParameterLowerBound(x.data(), int(v), t[size_t(free[v])].lower);
       problem.SetParameterUpperBound(x.data(), int(v), t[size_t(free[v])].upper);
     }
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = settings.max_iterations;
-    so.function_tolerance = 1e-14;
-    so.gradient_tolerance = 1e-16;
-    so.parameter_tolerance = 1e-12;
-    so.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
+    ceres::Solve(dense_solver_options(settings.max_iterations, {.function = 1e-14, .gradient = 1e-16, .parameter = 1e-12}),
+                 &problem, &summary);
     best.iterations += int(summary.iterations.size()) - 1;
     if (!summary.IsSolutionUsable() || !std::isfinite(summary.final_cost)) continue;
     if (summary.final_cost < best.cost) {
