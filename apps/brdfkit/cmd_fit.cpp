@@ -88,12 +88,11 @@ int run_fit(const FitArgs& a) {
   if (a.verbose) progress = [](std::string_view line) { std::cerr << line << std::endl; };
   fit::FitJobResult r;
   try {
-    r = fit::run_fit_job(model, store, a.file, sha256_file(a.file), a.settings, progress);
+    r = fit::fit_and_report(model, store, a.file, sha256_file(a.file), a.settings, report, progress);
   } catch (const fit::FitError& e) {
     std::cerr << "brdfkit: fit failed: " << e.what() << "\n";
     return 1;
   }
-  r.record.metrics = fit::report_metrics(store, model, r.record.values, report, fit::MetricOptions{a.settings.coarsen});
   const std::string doc = json_text(fit::fit_job_json(r, a.settings)) + "\n";
   write_file_atomically(a.output, doc);
   std::vector<std::filesystem::path> exported;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfkit/core/json_text.h"
+#include "brdfkit/models/model_json.h"
 #include "brdfkit/models/model.h"
 #include "command.h"
 
@@ -21,19 +22,7 @@ std::vector<const Model*> selected(const std::vector<std::string>& names) {
 
 nlohmann::json models_json(const std::vector<const Model*>& models) {
   nlohmann::json out = nlohmann::json::array();
-  for (const Model* m : models) {
-    nlohmann::json params = nlohmann::json::array();
-    for (const auto& p : m->params())
-      params.push_back({{"name", p.name},
-                        {"lower", p.lower},
-                        {"upper", p.upper},
-                        {"default", p.def},
-                        {"scope", p.scope == Scope::PerChannel ? "per-channel" : "shared"},
-                        {"linear", p.linear},
-                        {"doc", p.doc}});
-    out.push_back({{"name", m->name()}, {"description", m->description()}, {"reciprocal", m->reciprocal()},
-                   {"params", params}});
-  }
+  for (const Model* m : models) out.push_back(model_json(*m));
   return out;
 }
 

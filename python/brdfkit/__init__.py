@@ -143,7 +143,7 @@ def render(subjects, output=None, *, env=None, env_rotation=0.0, env_intensity=1
         if isinstance(s, Measured):
             items.append((s.path, s))
         elif isinstance(s, Fit):
-            items.append((s.data_file and f"fit of {s.data_file}" or s.model, s.brdf))
+            items.append((f"fit of {s.data_file}" if s.data_file else s.model, s.brdf))
         elif isinstance(s, Brdf):
             items.append((s.model.name, s))
         else:

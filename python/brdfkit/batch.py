@@ -51,15 +51,10 @@ def _as_executor(executor):
     raise TypeError(f"executor: expected a concurrent.futures.Executor or a Dask Client, got {type(executor).__name__}")
 
 
-def _unfinished(material, model, reason):
-    return {"material": material, "model": model, "status": "unfinished", "reason": reason, "json": "",
+def _row_without_fit(material, model, status, reason):
+    """The row of a fit no task saved: 'unfinished' (never run) or 'failed' (its task was lost)."""
+    return {"material": material, "model": model, "status": status, "reason": reason, "json": "",
             "metrics": [], "seconds": 0.0, "iterations": 0, "converged": False}
-
-
-def _failed(material, model, reason):
-    row = _unfinished(material, model, reason)
-    row["status"] = "failed"
-    return row
 
 
 class _Run:
@@ -94,7 +89,7 @@ class _Run:
                         raise
                     except Exception as e:  # the task itself was lost (e.g. its worker died too often)
                         material, _, model, *_ = self.args(k)
-                        row = _failed(material, model, f"{type(e).__name__}: {e}")
+                        row = _row_without_fit(material, model, "failed", f"{type(e).__name__}: {e}")
                     self.finish(k, row, last_try, elsewhere)
         finally:
             for f in pending:
@@ -147,8 +142,8 @@ def fit_all(inputs, models="single-lobe", out_dir="results/fits", *, report=DEFA
         run.run(again, last_try=True)
     except KeyboardInterrupt:
         interrupted = True
-    rows = [row or _unfinished(pairs[k // len(names)][0], names[k % len(names)],
-                               "the batch was interrupted before this fit started")
+    rows = [row or _row_without_fit(pairs[k // len(names)][0], names[k % len(names)], "unfinished",
+                                    "the batch was interrupted before this fit started")
             for k, row in enumerate(run.rows)]
     summary = _brdfkit._summarize_batch(pairs, names, out_dir, fit_settings, report_spec, compare or "", rows,
                                         interrupted, _time.monotonic() - started, log)

@@ -69,9 +69,8 @@ Fit run_fit(Measured& data, const Model& model, const fit::FitSettings& settings
   const std::string sha = data.sha256();
   const auto lock = data.lock();
   fit::MetricStore& store = data.store();
-  fit::FitJobResult r = fit::run_fit_job(model, store, data.path(), sha, settings, log);
-  r.record.metrics = fit::report_metrics(store, model, r.record.values, ids, fit::MetricOptions{settings.coarsen});
-  return Fit::from_doc(fit::fit_job_json(r, settings), "fit");
+  return Fit::from_doc(fit::fit_job_json(fit::fit_and_report(model, store, data.path(), sha, settings, ids, log), settings),
+                       "fit");
 }
 
 // `brdfkit error`'s numbers: {metric id: value, or None where the data cannot answer it}.

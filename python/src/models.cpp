@@ -11,6 +11,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/measured/albedo.h"
 #include "brdfkit/models/model.h"
+#include "brdfkit/models/model_json.h"
 #include "brdfkit/models/tabulate_brdf.h"
 #include "direction_arrays.h"
 #include "python_api.h"
@@ -18,21 +19,7 @@
 namespace brdfkit::python {
 namespace {
 
-py::list param_table(const Model& model) {
-  py::list out;
-  for (const ParamSpec& p : model.params()) {
-    py::dict d;
-    d["name"] = p.name;
-    d["lower"] = p.lower;
-    d["upper"] = p.upper;
-    d["default"] = p.def;
-    d["scope"] = p.scope == Scope::Shared ? "shared" : "per-channel";
-    d["linear"] = p.linear;
-    d["doc"] = p.doc;
-    out.append(d);
-  }
-  return out;
-}
+py::object param_table(const Model& model) { return to_python(model_json(model)["params"]); }
 
 // {name: value} for a shared parameter, {name: [r, g, b]} for a per-channel one (and for a shared
 // one whose channels differ: a per-channel-shape fit).

@@ -37,6 +37,14 @@ FitJobResult run_fit_job(const Model& model, MetricStore& store, const std::stri
   return r;
 }
 
+FitJobResult fit_and_report(const Model& model, MetricStore& store, const std::string& file, const std::string& sha256,
+                            const FitSettings& settings, const std::vector<std::string>& report,
+                            const Progress& progress) {
+  FitJobResult r = run_fit_job(model, store, file, sha256, settings, progress);
+  r.record.metrics = report_metrics(store, model, r.record.values, report, MetricOptions{settings.coarsen});
+  return r;
+}
+
 nlohmann::json fit_job_json(const FitJobResult& r, const FitSettings& settings, const std::string& material) {
   nlohmann::json j = to_json(r.record);
   j["fit"]["procedure"] = settings.procedure.empty() ? nlohmann::json(nullptr) : nlohmann::json(settings.procedure);

@@ -31,6 +31,12 @@ struct FitJobResult {
 FitJobResult run_fit_job(const Model& model, MetricStore& store, const std::string& file, const std::string& sha256,
                          const FitSettings& settings, const Progress& progress = {});
 
+// run_fit_job, then the metrics `report` (ids) on the same store and grids: what `brdfkit fit`
+// and Python's brdfkit.fit return, so both give the same numbers.
+FitJobResult fit_and_report(const Model& model, MetricStore& store, const std::string& file, const std::string& sha256,
+                            const FitSettings& settings, const std::vector<std::string>& report,
+                            const Progress& progress = {});
+
 // The record's JSON plus the job's options (fit.procedure — null for a plain fit —,
 // fit.per_channel_shape, fit.max_iterations, fit.best_start, fit.start_scan_points, fit.steps) and,
 // when given, the material name (data.material).
