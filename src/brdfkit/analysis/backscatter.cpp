@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include <ceres/ceres.h>
 
@@ -85,64 +86,76 @@ std::vector<std::vector<double>> shape_starts(const std::string& family, const P
   return s;
 }
 
+// ρd and Fr enter linearly: for the shape in x[2…], their weighted least-squares values, written
+// to x[0] and x[1].
+template <template <class> class Ndf>
+void linear_start(const BackscatterSlice& s, int c, bool log_space, std::vector<double>& x) {
+  double aa = 0, ab = 0, bb = 0, ay = 0, by = 0;
+  std::vector<double> unit = x;
+  unit[0] = 0, unit[1] = kPi;
+  for (size_t k = 0; k < s.theta_h.size(); ++k) {
+    const double m = s.value[k][c];
+    if (log_space && !(m > 0)) continue;
+    const double w = s.weight[k] / (log_space ? m * m : 1.0);  // relative residuals approximate log ones
+    const double a = kInvPi, b = slice_model<Ndf>(unit.data(), std::cos(s.theta_h[k]));
+    aa += w * a * a, ab += w * a * b, bb += w * b * b, ay += w * a * m, by += w * b * m;
+  }
+  const double det = aa * bb - ab * ab;
+  x[0] = det > 0 ? std::max(0.0, (ay * bb - by * ab) / det) : 0.0;
+  x[1] = det > 0 ? std::max(1e-6, (by * aa - ay * ab) / det) : 1.0;
+}
+
+// Ceres from x (ρd, Fr, shape) on channel c of the slice; the final cost, or nothing when the
+// channel has no value to fit.
+template <template <class> class Ndf>
+std::optional<double> solve_slice(const BackscatterSlice& s, int c, bool log_space, std::vector<double>& x) {
+  const ParamTable table = Ndf<double>::params();
+  ceres::Problem problem;
+  for (size_t k = 0; k < s.theta_h.size(); ++k) {
+    const double m = s.value[k][c];
+    if (log_space && !(m > 0)) continue;
+    using Cost = ceres::DynamicAutoDiffCostFunction<SliceResidual<Ndf>, 4>;
+    auto* cost = new Cost(new SliceResidual<Ndf>{std::cos(s.theta_h[k]), m, std::sqrt(s.weight[k]), log_space});
+    cost->AddParameterBlock(2 + int(table.size()));
+    cost->SetNumResiduals(1);
+    problem.AddResidualBlock(cost, nullptr, x.data());
+  }
+  if (problem.NumResidualBlocks() == 0) return std::nullopt;
+  problem.SetParameterLowerBound(x.data(), 0, 0.0);
+  problem.SetParameterUpperBound(x.data(), 0, 10.0);
+  problem.SetParameterLowerBound(x.data(), 1, 0.0);
+  problem.SetParameterUpperBound(x.data(), 1, 1e4);
+  for (size_t i = 0; i < table.size(); ++i) {
+    problem.SetParameterLowerBound(x.data(), 2 + int(i), table[i].lower);
+    problem.SetParameterUpperBound(x.data(), 2 + int(i), table[i].upper);
+  }
+  ceres::Solver::Options o;
+  o.max_num_iterations = 100;
+  o.linear_solver_type = ceres::DENSE_QR;
+  o.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(o, &problem, &summary);
+  return summary.final_cost;
+}
+
 template <template <class> class Ndf>
 ChannelFit fit_channel(const BackscatterSlice& s, int c, SliceFitSpace space, const std::string& family,
                        const std::vector<std::vector<double>>& seeded) {
-  const ParamTable table = Ndf<double>::params();
-  const int nshape = int(table.size());
   const bool log_space = space == SliceFitSpace::Log;
-  ChannelFit best;
   std::vector<std::vector<double>> starts;
-  for (const auto& shape : shape_starts(family, table)) {
-    std::vector<double> x = {-1, -1};  // ρd, Fr: from the linear solve below
+  for (const auto& shape : shape_starts(family, Ndf<double>::params())) {
+    std::vector<double> x = {-1, -1};  // ρd, Fr: from the linear solve
     x.insert(x.end(), shape.begin(), shape.end());
     starts.push_back(x);
   }
   starts.insert(starts.end(), seeded.begin(), seeded.end());
+  ChannelFit best;
   for (std::vector<double> x : starts) {
-    // ρd and Fr enter linearly: start from their weighted least-squares values for this shape.
-    if (x[0] < 0) {
-      double aa = 0, ab = 0, bb = 0, ay = 0, by = 0;
-      for (size_t k = 0; k < s.theta_h.size(); ++k) {
-        const double m = s.value[k][c];
-        if (log_space && !(m > 0)) continue;
-        const double w = s.weight[k] / (log_space ? m * m : 1.0);  // relative residuals approximate log ones
-        std::vector<double> unit = x;
-        unit[0] = 0, unit[1] = kPi;
-        const double a = kInvPi, b = slice_model<Ndf>(unit.data(), std::cos(s.theta_h[k]));
-        aa += w * a * a, ab += w * a * b, bb += w * b * b, ay += w * a * m, by += w * b * m;
-      }
-      const double det = aa * bb - ab * ab;
-      x[0] = det > 0 ? std::max(0.0, (ay * bb - by * ab) / det) : 0.0;
-      x[1] = det > 0 ? std::max(1e-6, (by * aa - ay * ab) / det) : 1.0;
-    }
-    ceres::Problem problem;
-    for (size_t k = 0; k < s.theta_h.size(); ++k) {
-      const double m = s.value[k][c];
-      if (log_space && !(m > 0)) continue;
-      using Cost = ceres::DynamicAutoDiffCostFunction<SliceResidual<Ndf>, 4>;
-      auto* cost = new Cost(new SliceResidual<Ndf>{std::cos(s.theta_h[k]), m, std::sqrt(s.weight[k]), log_space});
-      cost->AddParameterBlock(2 + nshape);
-      cost->SetNumResiduals(1);
-      problem.AddResidualBlock(cost, nullptr, x.data());
-    }
-    if (problem.NumResidualBlocks() == 0) break;
-    problem.SetParameterLowerBound(x.data(), 0, 0.0);
-    problem.SetParameterUpperBound(x.data(), 0, 10.0);
-    problem.SetParameterLowerBound(x.data(), 1, 0.0);
-    problem.SetParameterUpperBound(x.data(), 1, 1e4);
-    for (int i = 0; i < nshape; ++i) {
-      problem.SetParameterLowerBound(x.data(), 2 + i, table[size_t(i)].lower);
-      problem.SetParameterUpperBound(x.data(), 2 + i, table[size_t(i)].upper);
-    }
-    ceres::Solver::Options o;
-    o.max_num_iterations = 100;
-    o.linear_solver_type = ceres::DENSE_QR;
-    o.logging_type = ceres::SILENT;
-    ceres::Solver::Summary summary;
-    ceres::Solve(o, &problem, &summary);
-    if (std::isfinite(summary.final_cost) && summary.final_cost < best.cost) {
-      best.cost = summary.final_cost;
+    if (x[0] < 0) linear_start<Ndf>(s, c, log_space, x);
+    const std::optional<double> cost = solve_slice<Ndf>(s, c, log_space, x);
+    if (!cost) break;
+    if (std::isfinite(*cost) && *cost < best.cost) {
+      best.cost = *cost;
       best.x = x;
     }
   }

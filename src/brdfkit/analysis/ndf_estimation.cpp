@@ -100,6 +100,27 @@ Eigen::VectorXd solve_nonnegative(const Eigen::MatrixXd& m, const Eigen::VectorX
   return x;
 }
 
+// One Anderson step (Walker & Ni 2011, Eq. 2.1–2.2): from inputs xs and outputs phis = Φ(xs),
+// most recent last, the next input min ‖f_k − ΔF γ‖ over the last `depth` residual differences
+// (f = Φ(x) − x), clamped to D ≥ 0; the plain step Φ(x_k) when there is no difference yet or the
+// least-squares solve fails.
+Eigen::VectorXd anderson_step(const std::vector<Eigen::VectorXd>& xs, const std::vector<Eigen::VectorXd>& phis,
+                              int depth) {
+  const Eigen::VectorXd& phi = phis.back();
+  const size_t h = xs.size();
+  const int m = int(std::min<size_t>(size_t(depth), h - 1));
+  if (m == 0) return phi;
+  Eigen::MatrixXd df(phi.size(), m), dphi(phi.size(), m);
+  for (int i = 0; i < m; ++i) {
+    const size_t a = h - 1 - size_t(i), b = a - 1;
+    df.col(i) = (phis[a] - xs[a]) - (phis[b] - xs[b]);
+    dphi.col(i) = phis[a] - phis[b];
+  }
+  const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(phi - xs.back());
+  if (!gamma.allFinite()) return phi;
+  return (phi - dphi * gamma).cwiseMax(0.0);
+}
+
 struct State {
   std::vector<double> d;        // normalized D at the nodes
   std::array<double, 3> kd{}, ks{};
@@ -127,7 +148,7 @@ class Estimator {
     e.theta = theta_;
     e.f0 = f0;
     const size_t n = s_.size();
-    std::vector<double> fresnel(n), g(n, 0.0);
+    std::vector<double> fresnel(n), g(n);
     const SchlickFresnel<double> schlick(&f0);
     for (size_t k = 0; k < n; ++k) fresnel[k] = schlick.eval(s_.cd[k]);
     State st;
@@ -143,10 +164,7 @@ class Estimator {
     std::optional<TabulatedCookTorrance> model;
     for (int it = 0; it <= iterations; ++it) {
       // Masking: constant 1 at first (seed 002 §5.1), then from the current D.
-      for (size_t k = 0; k < n; ++k) {
-        const double mask = model ? model->masking().g1(s_.ci[k]) * model->masking().g1(s_.co[k]) : 1.0;
-        g[k] = s_.a[k] * fresnel[k] * mask / (4 * s_.ci[k] * s_.co[k]);
-      }
+      weights(model ? &*model : nullptr, fresnel, g);
       for (int inner = 0; inner < 2; ++inner) {
         solve_table(g, st);
         solve_colours(g, st);
@@ -159,23 +177,8 @@ class Estimator {
         const Eigen::VectorXd& x = xs.back();
         if ((phi - x).cwiseAbs().maxCoeff() <= opt_.tolerance * phi.maxCoeff()) break;
       }
-      Eigen::VectorXd next = phi;
-      if (model) {
-        phis.push_back(phi);
-        const size_t h = xs.size();
-        const int m = int(std::min<size_t>(kDepth, h - 1));
-        if (m > 0) {
-          // min ‖f_k − ΔF γ‖ over the last m residual differences (f = Φ(x) − x).
-          Eigen::MatrixXd df(phi.size(), m), dphi(phi.size(), m);
-          for (int i = 0; i < m; ++i) {
-            const size_t a = h - 1 - size_t(i), b = a - 1;
-            df.col(i) = (phis[a] - xs[a]) - (phis[b] - xs[b]);
-            dphi.col(i) = phis[a] - phis[b];
-          }
-          const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(phi - xs.back());
-          if (gamma.allFinite()) next = (phi - dphi * gamma).cwiseMax(0.0);
-        }
-      }
+      if (model) phis.push_back(phi);
+      const Eigen::VectorXd next = model ? anderson_step(xs, phis, kDepth) : phi;
       xs.push_back(next);
       if (xs.size() > size_t(kDepth) + 1) xs.erase(xs.begin()), phis.erase(phis.begin());
       model.emplace(theta_, std::vector<double>(next.data(), next.data() + next.size()));
@@ -187,6 +190,14 @@ class Estimator {
   }
 
  private:
+  // g = a F G / (4 cosθi cosθo) per sample, the factor of D in the model; G = 1 without a model.
+  void weights(const TabulatedCookTorrance* model, const std::vector<double>& fresnel, std::vector<double>& g) const {
+    for (size_t k = 0; k < g.size(); ++k) {
+      const double mask = model ? model->masking().g1(s_.ci[k]) * model->masking().g1(s_.co[k]) : 1.0;
+      g[k] = s_.a[k] * fresnel[k] * mask / (4 * s_.ci[k] * s_.co[k]);
+    }
+  }
+
   // With ks fixed per channel: linear least squares in (kd_R, kd_G, kd_B, D_0 … D_{N−1}) plus a
   // small second-difference penalty (nodes without data, e.g. θh > 80° under `ngan`, follow
   // their neighbours); then D is normalized (ndf/tabulated.h) and the scale moves into ks.

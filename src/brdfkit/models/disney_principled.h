@@ -17,17 +17,15 @@
 // Cdlin / luminance(Cdlin): that mixes the three channels, and brdfkit's models evaluate a channel
 // from that channel's parameters only (models/model.h).
 #include <cmath>
-#include <optional>
 #include <string_view>
 
 #include "brdfkit/core/param.h"
 #include "brdfkit/core/vec.h"
 #include "brdfkit/models/principled_terms.h"
-#include "brdfkit/models/renderer_sampling.h"
 
 namespace brdfkit {
 
-struct DisneyPrincipled {
+struct DisneyPrincipled : principled_detail::Sampling<DisneyPrincipled> {
   static std::string_view name() { return "disney-principled"; }
   static std::string_view description() {
     return "Burley 2012 principled BRDF as BRDF Explorer's disney.brdf (tints and anisotropy 0)";
@@ -50,10 +48,7 @@ struct DisneyPrincipled {
     const T a = alpha * alpha, b = c * c;
     return T(1) / (c + sqrt(a + b - a * b));
   }
-  template <class T> static T alpha(const T* p) {
-    const T r2 = p[kRoughness] * p[kRoughness];
-    return r2 > T(0.001) ? r2 : T(0.001);
-  }
+  template <class T> static T alpha(const T* p) { return principled_detail::roughness_alpha(p[kRoughness]); }
   template <class T> static T linear_base(const T* p) {
     using std::pow;
     return pow(p[kBaseColor], 2.2);
@@ -92,13 +87,7 @@ struct DisneyPrincipled {
     return {principled_detail::lerp(0.08 * p[kSpecular], linear_base(p), p[kMetallic]), renderer_sampling::ggx(alpha(p))};
   }
   static renderer_sampling::HalfLobe<Ggx<double>> clearcoat_lobe(const double* p) {
-    return {0.25 * 0.04 * p[kClearcoat], renderer_sampling::ggx(principled_detail::lerp(0.1, 0.001, p[kClearcoatGloss]))};
-  }
-  static std::optional<Vec3d> sample(const double* p, int, const Vec3d& wo, const Vec2d& u, double u_lobe) {
-    return renderer_sampling::sample(diffuse_weight(p), main_lobe(p), clearcoat_lobe(p), wo, u, u_lobe);
-  }
-  static double pdf(const double* p, int, const Vec3d& wo, const Vec3d& wi) {
-    return renderer_sampling::pdf(diffuse_weight(p), main_lobe(p), clearcoat_lobe(p), wo, wi);
+    return principled_detail::clearcoat_lobe(p[kClearcoat], p[kClearcoatGloss]);
   }
 };
 

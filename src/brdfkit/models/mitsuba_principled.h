@@ -18,18 +18,16 @@
 // sheen_tint, which tint by base_color / luminance(base_color): that mixes the three channels,
 // and brdfkit's models evaluate a channel from that channel's parameters only (models/model.h).
 #include <array>
-#include <optional>
 #include <string_view>
 
 #include "brdfkit/core/param.h"
 #include "brdfkit/core/vec.h"
 #include "brdfkit/fresnel/dielectric.h"
 #include "brdfkit/models/principled_terms.h"
-#include "brdfkit/models/renderer_sampling.h"
 
 namespace brdfkit {
 
-struct MitsubaPrincipled {
+struct MitsubaPrincipled : principled_detail::Sampling<MitsubaPrincipled> {
   static std::string_view name() { return "mitsuba-principled"; }
   static std::string_view description() {
     return "Mitsuba 3 principled BSDF, reflection (v3.9.1 principled.cpp; tints, anisotropy, transmission 0)";
@@ -52,10 +50,7 @@ struct MitsubaPrincipled {
     using std::sqrt;
     return T(2) / (T(1) - sqrt(T(0.08) * p[kSpecular])) - T(1);
   }
-  template <class T> static T alpha(const T* p) {
-    const T r2 = p[kRoughness] * p[kRoughness];
-    return r2 > T(0.001) ? r2 : T(0.001);
-  }
+  template <class T> static T alpha(const T* p) { return principled_detail::roughness_alpha(p[kRoughness]); }
   // GGX G1 = 2 / (1 + sqrt(1 + α² tan²θ)), 1 at normal incidence.
   template <class T> static T ggx_g1(const T& a, const Vec3<T>& v) {
     using std::sqrt;
@@ -106,13 +101,7 @@ struct MitsubaPrincipled {
     return {(1 - p[kMetallic]) * f0 + p[kMetallic] * p[kBaseColor], renderer_sampling::ggx(alpha(p))};
   }
   static renderer_sampling::HalfLobe<Ggx<double>> clearcoat_lobe(const double* p) {
-    return {0.25 * 0.04 * p[kClearcoat], renderer_sampling::ggx(principled_detail::lerp(0.1, 0.001, p[kClearcoatGloss]))};
-  }
-  static std::optional<Vec3d> sample(const double* p, int, const Vec3d& wo, const Vec2d& u, double u_lobe) {
-    return renderer_sampling::sample(diffuse_weight(p), main_lobe(p), clearcoat_lobe(p), wo, u, u_lobe);
-  }
-  static double pdf(const double* p, int, const Vec3d& wo, const Vec3d& wi) {
-    return renderer_sampling::pdf(diffuse_weight(p), main_lobe(p), clearcoat_lobe(p), wo, wi);
+    return principled_detail::clearcoat_lobe(p[kClearcoat], p[kClearcoatGloss]);
   }
 };
 

@@ -85,9 +85,7 @@ template <class T> struct AbcFacet {
     const double L = std::log1p(B), a = 1.0 - C;
     const double lw = std::abs(a * L) < 1e-9 ? u.x() * L : std::log1p(u.x() * std::expm1(a * L)) / a;
     const double c = std::clamp(1.0 - std::expm1(lw) / B, 0.0, 1.0);
-    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
-    const double phi = 2 * kPi * u.y();
-    return Vec3d(s * std::cos(phi), s * std::sin(phi), c);
+    return isotropic_normal(c, u.y());
   }
   // Seed 003 Eq. 23–24: S / ∫ S dω, ∫ S dω = 2π A E(1−C, ln(1+B)) / B.
   double pdf_paper(const Vec3d& m) const

@@ -58,10 +58,7 @@ template <class T> struct Beckmann {
   {
     const double a = alpha;
     const double tan2 = -a * a * std::log1p(-u.x());
-    const double cos_t = 1.0 / std::sqrt(1.0 + tan2);
-    const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
-    const double phi = 2 * kPi * u.y();
-    return Vec3d(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
+    return isotropic_normal(1.0 / std::sqrt(1.0 + tan2), u.y());
   }
   double pdf(const Vec3d& m) const
     requires std::is_same_v<T, double>

@@ -53,9 +53,7 @@ template <class T> struct BlinnPhong {
     requires std::is_same_v<T, double>
   {
     const double c = u.x() > 0.0 ? std::exp(std::log(u.x()) / (N + 2.0)) : 0.0;
-    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
-    const double phi = 2 * kPi * u.y();
-    return Vec3d(s * std::cos(phi), s * std::sin(phi), c);
+    return isotropic_normal(c, u.y());
   }
   double pdf(const Vec3d& m) const
     requires std::is_same_v<T, double>

@@ -18,7 +18,9 @@
 //   static constexpr UnitFormRange kUnitForm;           symbol and range of the unit-form comparison
 // (analysis/ndf_conversion.h). ndf/distributions.h lists every distribution once: the Cook-Torrance
 // models, the back-scatter families, `convert-ndf` and the typed tests are generated from it.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <string_view>
 #include <vector>
@@ -59,6 +61,14 @@ struct UnitFormRange {
   double lower, upper;
   std::string_view formula;  // the unit form with its source, for listings
 };
+
+// The unit vector at polar cosine cos_theta and azimuth 2π u_phi: the last step of every isotropic
+// sampler, whose inverted CDF gives cos θm and whose azimuth is uniform.
+inline Vec3d isotropic_normal(double cos_theta, double u_phi) {
+  const double s = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  const double phi = 2 * kPi * u_phi;
+  return Vec3d(s * std::cos(phi), s * std::sin(phi), cos_theta);
+}
 
 template <template <class> class Ndf>
 concept Distribution = requires(const Ndf<double>& d, const double* p, double c, const Vec2d& u, const Vec3d& m) {

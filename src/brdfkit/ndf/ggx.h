@@ -77,10 +77,7 @@ template <class T> struct Ggx {
     const double a2 = alpha * alpha;
     // cos²θ = (1 − u)/(1 + (α² − 1) u), avoids the u → 1 division.
     const double cos2 = (1.0 - u.x()) / (1.0 + (a2 - 1.0) * u.x());
-    const double cos_t = std::sqrt(std::clamp(cos2, 0.0, 1.0));
-    const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos2));
-    const double phi = 2 * kPi * u.y();
-    return Vec3d(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
+    return isotropic_normal(std::sqrt(std::clamp(cos2, 0.0, 1.0)), u.y());
   }
   double pdf(const Vec3d& m) const
     requires std::is_same_v<T, double>

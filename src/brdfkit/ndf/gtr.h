@@ -77,9 +77,7 @@ template <class T> struct Gtr {
     }
     const double v = std::abs(a2 - 1.0) < 1e-12 ? u.x() : std::expm1(log_s) / (a2 - 1.0);
     const double c = std::sqrt(std::clamp(v, 0.0, 1.0));
-    const double sn = std::sqrt(std::max(0.0, 1.0 - c * c));
-    const double phi = 2 * kPi * u.y();
-    return Vec3d(sn * std::cos(phi), sn * std::sin(phi), c);
+    return isotropic_normal(c, u.y());
   }
   double pdf(const Vec3d& m) const
     requires std::is_same_v<T, double>

@@ -53,9 +53,7 @@ template <class T> struct SchlickRational {
   {
     const double y = u.x() * m * m / (m - u.x() * (m - 1.0));
     const double c = std::clamp(std::sqrt(std::max(0.0, y)) + 1.0 - m, 0.0, 1.0);
-    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
-    const double phi = 2 * kPi * u.y();
-    return Vec3d(s * std::cos(phi), s * std::sin(phi), c);
+    return isotropic_normal(c, u.y());
   }
   double pdf(const Vec3d& mm) const
     requires std::is_same_v<T, double>
