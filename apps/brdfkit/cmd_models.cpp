@@ -1,5 +1,7 @@
 // `brdfkit models [NAME ...] [--json]`: every model of the catalogue (or the named ones, sums
 // "a+b" of models/lobe_sum.h included) with its parameter table.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include <iostream>
@@ -12,6 +14,13 @@
 
 namespace brdfkit::cli {
 namespace {
+
+// ", formula on [a, b]" where the formula's domain is wider than the fitter's box.
+std::string domain_note(const ParamSpec& p) {
+  if (p.valid_lower() == p.lower && p.valid_upper() == p.upper) return "";
+  const double hi = p.valid_upper();
+  return fmt::format(", formula on [{:g}, {}", p.valid_lower(), std::isfinite(hi) ? fmt::format("{:g}]", hi) : "inf)");
+}
 
 std::vector<const Model*> selected(const std::vector<std::string>& names) {
   if (names.empty()) return {all_models().begin(), all_models().end()};
@@ -43,9 +52,9 @@ const CommandRegistration reg("models", [](CLI::App& app) {
     for (const Model* m : models) {
       std::cout << fmt::format("{}  —  {}\n", m->name(), m->description());
       for (const auto& p : m->params())
-        std::cout << fmt::format("    {:<10} [{:g}, {:g}] default {:g}  {}{}  {}\n", p.name, p.lower, p.upper, p.def,
+        std::cout << fmt::format("    {:<10} [{:g}, {:g}] default {:g}  {}{}{}  {}\n", p.name, p.lower, p.upper, p.def,
                                  p.scope == Scope::PerChannel ? "per-channel" : "shared", p.linear ? ", linear" : "",
-                                 p.doc);
+                                 domain_note(p), p.doc);
     }
     return 0;
   };

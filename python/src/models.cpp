@@ -128,7 +128,7 @@ const char* kBrdfDoc = R"(A model of the catalogue with parameter values.
 Brdf(model, params=None, **values): model is a name ('cook-torrance-ggx', sums 'lambert+ward') or
 a Model; values by parameter name, a number for every channel or (R, G, B) for a per-channel
 parameter; the others keep their defaults. ValueError naming the parameter for an unknown name,
-a value outside its bounds or three values for a shared parameter.
+a value outside its formula's domain or three values for a shared parameter.
 
 rho (eval) excludes the cosine: the reflected radiance is integral of L(wi) rho(wi, wo) cos(theta_i) dwi.
 Directions are unit vectors in the local frame (z = normal), wi towards the light and wo towards the

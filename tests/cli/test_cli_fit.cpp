@@ -95,7 +95,7 @@ TEST_F(CliFit, BadInputsExitWithTwoAndNameTheProblem) {
   const std::string data = path("ct.binary");
   std::ofstream(path("garbage.json")) << "{not json";
   std::ofstream(path("notnum.json")) << R"({"model": "lambert", "params": [{"name": "kd", "values": [0.1, "x", 0.2]}]})";
-  std::ofstream(path("bounds.json")) << R"({"model": "lambert", "params": [{"name": "kd", "values": [0.1, 7, 0.2]}]})";
+  std::ofstream(path("bounds.json")) << R"({"model": "lambert", "params": [{"name": "kd", "values": [0.1, -7, 0.2]}]})";
   const std::pair<std::string, std::string> cases[] = {
       {"fit " + path("missing.binary") + " --model lambert -o " + path("x.json"), "missing.binary"},
       {"fit " + data + " --model no-such-model -o " + path("x.json"), "no-such-model"},
@@ -106,7 +106,7 @@ TEST_F(CliFit, BadInputsExitWithTwoAndNameTheProblem) {
       {"error " + data + " --params " + path("none.json"), "none.json"},
       {"error " + data + " --params " + path("garbage.json"), "garbage.json"},
       {"error " + data + " --params " + path("notnum.json"), "values[1]"},
-      {"error " + data + " --params " + path("bounds.json"), "outside its bounds"},
+      {"error " + data + " --params " + path("bounds.json"), "outside the formula's domain"},
   };
   for (const auto& [args, needle] : cases) {
     const auto r = run_cli(args);

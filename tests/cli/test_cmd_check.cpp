@@ -50,7 +50,7 @@ TEST(CmdCheck, BadInputExitsTwoWithAMessage) {
                         Case{"check cook-torrance --param kd=0.1,0.2", "three"},
                         Case{"check cook-torrance --param alpha[r]=0.1", "shared"},
                         Case{"check cook-torrance --param alpha=0.1,0.1,0.1", "shared"},
-                        Case{"check cook-torrance --param kd=7", "outside"},
+                        Case{"check cook-torrance --param kd=-1", "outside the formula's domain"},
                         Case{"check cook-torrance --theta-o 95", "theta-o"}}) {
     const auto r = run_cli(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;

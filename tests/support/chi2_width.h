@@ -74,6 +74,7 @@ inline const std::vector<PowerCase>& power_cases() {
       {"lafortune-2", {{"N1", -0.5}, {"N2", -0.5}}},
       {"ashikhmin-shirley", {{"N", -0.5}}},
       {"ashikhmin-shirley-dielectric", {{"N", -0.5}}},
+      {"ashikhmin-shirley-ngan2005", {{"N", -0.5}}},
       {"he", {{"tau", -1}}},
       {"low-smooth", {{"B", -0.5}}, {{"B", 25}}, 1000000},
       {"low-smooth-2", {{"B1", -0.5}, {"B2", -0.5}}, {{"B1", 25}, {"B2", 25}}, 1000000},

@@ -1,8 +1,20 @@
 #include "brdfkit/core/param.h"
 
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
 #include "brdfkit/core/error.h"
 
 namespace brdfkit {
+
+double ParamSpec::valid_lower() const { return std::isnan(domain_lower) ? lower : domain_lower; }
+
+double ParamSpec::valid_upper() const {
+  if (!std::isnan(domain_upper)) return domain_upper;
+  return linear && lower == 0 ? std::numeric_limits<double>::infinity() : upper;
+}
 
 ParamValues ParamValues::defaults(const ParamTable& table) {
   ParamValues v;
@@ -23,9 +35,9 @@ void ParamValues::set(const ParamTable& table, const std::string& name, double v
   const int i = find_param(table, name);
   if (i < 0) throw InputError("parameter '" + name + "'", "unknown for this model");
   const ParamSpec& p = table[size_t(i)];
-  if (!(value >= p.lower && value <= p.upper))
-    throw InputError("parameter '" + name + "'", "value " + std::to_string(value) + " outside [" +
-                                                      std::to_string(p.lower) + ", " + std::to_string(p.upper) + "]");
+  if (!p.in_domain(value))
+    throw InputError("parameter '" + name + "'", fmt::format("value {} outside the formula's domain [{}, {}]", value,
+                                                             p.valid_lower(), p.valid_upper()));
   if (channel >= 0 && p.scope == Scope::Shared)
     throw InputError("parameter '" + name + "'", "is shared by the three channels; set it without a channel");
   for (int c = 0; c < 3; ++c)

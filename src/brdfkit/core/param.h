@@ -1,6 +1,7 @@
 #pragma once
 // A model's parameter table: the one description that fitting, the CLI, JSON and Python read.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,9 @@ enum class Scope {
   Shared,      // one value for R, G and B (lobe shapes by default)
 };
 
+// An unbounded domain edge (ParamSpec::domain_upper).
+inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
 struct ParamSpec {
   std::string name;  // the paper's name: "kd", "alpha", "p", "eta" — never "roughness"
   double lower;
@@ -19,6 +23,16 @@ struct ParamSpec {
   Scope scope;
   bool linear;       // ρ is linear in it with the others fixed (colour scales): variable projection
   std::string doc;   // one line: meaning and source
+  // [lower, upper] is the box the fitter searches; the formula is defined on a wider domain, which
+  // is what eval, tabulate, render, error and loaded fits accept (published values lie outside
+  // boxes). Unset (NaN): the box's edge, except a colour scale's upper edge (linear, lower 0),
+  // which is ∞: ρ is linear in it.
+  double domain_lower = std::numeric_limits<double>::quiet_NaN();
+  double domain_upper = std::numeric_limits<double>::quiet_NaN();
+
+  double valid_lower() const;
+  double valid_upper() const;
+  bool in_domain(double x) const { return x >= valid_lower() && x <= valid_upper(); }
 };
 
 using ParamTable = std::vector<ParamSpec>;

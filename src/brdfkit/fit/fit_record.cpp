@@ -109,9 +109,10 @@ void read_params(const nlohmann::json& j, const std::string& where, FitRecord& r
     const ParamSpec& s = table[size_t(i)];
     for (int c = 0; c < 3; ++c) {
       const double x = number_field(values[size_t(c)], at + ".values[" + std::to_string(c) + "]");
-      if (!(x >= s.lower && x <= s.upper))
+      if (!s.in_domain(x))
         throw InputError(at + ".values[" + std::to_string(c) + "]",
-                         fmt::format("{} = {} outside its bounds [{}, {}]", name, x, s.lower, s.upper));
+                         fmt::format("{} = {} outside the formula's domain [{}, {}]", name, x, s.valid_lower(),
+                                     s.valid_upper()));
       r.values.values[size_t(c)][size_t(i)] = x;
     }
     if (s.scope == Scope::Shared && !r.per_channel_shape &&

@@ -92,13 +92,14 @@ LoadedParams load_params(const std::filesystem::path& file, const std::string& m
   if (std::filesystem::is_directory(file)) throw InputError(where, "is a folder, not a parameter file");
   std::ifstream in(file);
   if (!in) throw InputError(where, "cannot open for reading");
+  const bool bbm_text = file.extension() == ".fit";  // published fits in BBM's text form (models/bbm_fit_text.h)
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(in);
+    if (!bbm_text) doc = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where, std::string("not valid JSON: ") + e.what());
   }
-  if (doc.is_object() && doc.contains("materials")) {
+  if (bbm_text || (doc.is_object() && doc.contains("materials"))) {
     const PublishedFits fits = PublishedFits::read(file);
     const std::vector<std::string> names = fits.materials();
     if (material.empty())

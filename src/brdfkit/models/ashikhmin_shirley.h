@@ -4,7 +4,9 @@
 // `ashikhmin-shirley`: F = Schlick with F0 = Rs per channel (Ashikhmin-Shirley 2000 Eq. 5),
 // which is also the lobe's colour. `ashikhmin-shirley-dielectric`: ks per channel times the
 // Cook-Torrance dielectric F(wi·h; η), the form of Löw 2012's published fits (their
-// `conventions`). Reciprocal: wi·h = wo·h and the max is symmetric.
+// `conventions`). `ashikhmin-shirley-ngan2005`: seed 002's form (§3.1, a specular colour times a
+// lobe shape shared by the channels), ks per channel times Schlick F(wi·h; F0) with one F0, as
+// Ngan's published fits define it (published-fits/ngan2005/README.md). Reciprocal: wi·h = wo·h and the max is symmetric.
 // Sampling: the half vector with density (N+1)/(2π) cosᴺθh (Ashikhmin-Shirley 2000 §3).
 #include <cmath>
 #include <optional>
@@ -55,7 +57,7 @@ struct AshikhminShirley {
   static ParamTable params() {
     return {{"kd", 0.0, 1.0, 0.5, Scope::PerChannel, true, "diffuse albedo (Lambertian kd/pi)"},
             {"Rs", 0.0, 1.0, 0.05, Scope::PerChannel, false, "specular reflectance at normal incidence, Schlick F0 (AS 2000)"},
-            {"N", 0.0, 1e7, 100.0, Scope::Shared, false, "Phong-like exponent nu = nv (sharpness)"}};
+            {"N", 0.0, 1e7, 100.0, Scope::Shared, false, "Phong-like exponent nu = nv (sharpness)", 0.0, kUnbounded}};
   }
   template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
@@ -83,8 +85,10 @@ struct AshikhminShirleyDielectric {
     // Löw 2012's published fits reach ks = 1.82 and N = 6.2e5 (published-fits/low2012-ashikhminshirley-*.json).
     return {{"kd", 0.0, 1.0, 0.5, Scope::PerChannel, true, "diffuse albedo (Lambertian kd/pi)"},
             {"ks", 0.0, 5.0, 1.0, Scope::PerChannel, true, "specular scale (Low 2012's specular 'albedo')"},
-            {"N", 0.0, 1e7, 100.0, Scope::Shared, false, "Phong-like exponent nu = nv (Low 2012's 'sharpness')"},
-            {"eta", 1.0, 100.0, 1.5, Scope::Shared, false, "Fresnel parameter eta (Cook-Torrance dielectric, Low 2012)"}};
+            {"N", 0.0, 1e7, 100.0, Scope::Shared, false, "Phong-like exponent nu = nv (Low 2012's 'sharpness')", 0.0,
+             kUnbounded},
+            {"eta", 1.0, 100.0, 1.5, Scope::Shared, false, "Fresnel parameter eta (Cook-Torrance dielectric, Low 2012)",
+             1.0, kUnbounded}};
   }
   template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
@@ -100,6 +104,37 @@ struct AshikhminShirleyDielectric {
   }
   static double pdf(const double* p, int, const Vec3d& wo, const Vec3d& wi) {
     return as_detail::pdf(p[0], spec_weight(p, wo), p[2], wo, wi);
+  }
+};
+
+struct AshikhminShirleyNgan {
+  static std::string_view name() { return "ashikhmin-shirley-ngan2005"; }
+  static std::string_view description() {
+    return "Lambert + isotropic Ashikhmin-Shirley lobe, ks x Schlick F(F0): seed 002's form (Ngan 2005 fits)";
+  }
+  static constexpr bool kReciprocal = true;
+  enum Index { kKd, kKs, kN, kF0 };
+  static ParamTable params() {
+    return {{"kd", 0.0, 1.0, 0.5, Scope::PerChannel, true, "diffuse albedo (Lambertian kd/pi)"},
+            {"ks", 0.0, 1.0, 0.1, Scope::PerChannel, true, "specular colour (Ngan 2005's specular 'albedo')"},
+            {"N", 0.0, 1e7, 100.0, Scope::Shared, false, "Phong-like exponent nu = nv (Ngan 2005's 'sharpness')", 0.0,
+             kUnbounded},
+            {"F0", 0.0, 1.0, 0.05, Scope::Shared, false, "Schlick F0 shared by the channels (Ngan 2005's 'fresnelReflectance')"}};
+  }
+  template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
+    if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
+    T cos_d;
+    const T s = as_detail::lobe(p[kN], wi, wo, cos_d);
+    return p[kKd] * T(kInvPi) + p[kKs] * s * SchlickFresnel<T>(p + kF0).eval(cos_d);
+  }
+  static double spec_weight(const double* p, const Vec3d& wo) {
+    return p[kKs] * SchlickFresnel<double>(p + kF0).eval(wo.z());
+  }
+  static std::optional<Vec3d> sample(const double* p, int, const Vec3d& wo, const Vec2d& u, double u_lobe) {
+    return as_detail::sample(p[kKd], spec_weight(p, wo), p[kN], wo, u, u_lobe);
+  }
+  static double pdf(const double* p, int, const Vec3d& wo, const Vec3d& wi) {
+    return as_detail::pdf(p[kKd], spec_weight(p, wo), p[kN], wo, wi);
   }
 };
 

@@ -23,7 +23,7 @@ struct BlinnPhongLobe {
   static ParamTable params() {
     return {{"kd", 0.0, 1.0, 0.5, Scope::PerChannel, true, "diffuse albedo (Lambertian kd/pi)"},
             {"ks", 0.0, 1.0, 0.1, Scope::PerChannel, true, "specular scale, ~ albedo at normal incidence (DESIGN.md 6)"},
-            {"N", 0.0, 1e6, 50.0, Scope::Shared, false, "Blinn-Phong exponent (sharpness)"}};
+            {"N", 0.0, 1e6, 50.0, Scope::Shared, false, "Blinn-Phong exponent (sharpness)", 0.0, kUnbounded}};
   }
   template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
     using std::pow;

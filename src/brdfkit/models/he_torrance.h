@@ -60,8 +60,10 @@ struct HeTorrance {
     return {{"kd", 0.0, 1.0, 0.2, Scope::PerChannel, true, "uniform-diffuse albedo a(lambda) as kd/pi (He 1991 Eq. 69)"},
             {"ks", 0.0, 2.0, 1.0, Scope::PerChannel, true,
              "scale of the directional-diffuse term; 1 = He's physical model (seed 002 fits it freely)"},
-            {"sigma0", 0.005, 2.0, 0.18, Scope::Shared, false, "RMS surface height sigma0 in um (He 1991 §2)"},
-            {"tau", 0.1, 50.0, 3.0, Scope::Shared, false, "surface autocorrelation length tau in um (He 1991 §2)"},
+            // The fitter's box; the series and its tables are checked to 10 µm and 200 µm
+            // (tests/models/test_param_domains.cpp), which Ngan's published fits need (σ0 8.74, τ 103).
+            {"sigma0", 0.005, 2.0, 0.18, Scope::Shared, false, "RMS surface height sigma0 in um (He 1991 §2)", 0.005, 10.0},
+            {"tau", 0.1, 50.0, 3.0, Scope::Shared, false, "surface autocorrelation length tau in um (He 1991 §2)", 0.1, 200.0},
             {"eta", 0.01, 100.0, 1.5, Scope::PerChannel, false, "real part of the complex index n (He 1991 Eq. 70)"},
             {"k", 0.0, 100.0, 0.0, Scope::PerChannel, false, "imaginary part of the complex index (0: dielectric)"}};
   }

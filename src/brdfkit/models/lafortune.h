@@ -44,7 +44,8 @@ template <int L> struct LafortuneLobes {
       t.push_back({"Cxy" + s, -1.0, 1.0, -1.0, Scope::Shared, false,
                    "tangential coefficient; -1 with Cz = 1 is the mirror lobe (Lafortune 1997)"});
       t.push_back({"Cz" + s, 0.0, 1.0, 1.0, Scope::Shared, false, "normal coefficient (Lafortune 1997)"});
-      t.push_back({"N" + s, 0.0, 1e4, n_def, Scope::Shared, false, "lobe exponent (sharpness)"});
+      // The fitter searches N ≤ 10⁴; the lobe is defined for any N ≥ 0 (xᴺ of x ∈ [0, 1]).
+      t.push_back({"N" + s, 0.0, 1e4, n_def, Scope::Shared, false, "lobe exponent (sharpness)", 0.0, kUnbounded});
     }
     return t;
   }

@@ -52,7 +52,7 @@ struct LowMicrofacet {
             {"B", 1e-3, 1e8, 100.0, Scope::Shared, false, "ABC facet sharpness B = b^2 (seed 003 Eq. 11, 15)"},
             {"C", 1e-3, 10.0, 1.0, Scope::Shared, false, "ABC facet fall-off C (seed 003 Eq. 11, 15)"},
             {"eta", 1.0, 100.0, 1.5, Scope::Shared, false,
-             "Fresnel parameter eta (Cook-Torrance dielectric, seed 003 Eq. 15)"}};
+             "Fresnel parameter eta (Cook-Torrance dielectric, seed 003 Eq. 15)", 1.0, kUnbounded}};
   }
 
   template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {

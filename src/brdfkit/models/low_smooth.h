@@ -107,7 +107,8 @@ struct LowSmooth {
             {"A", 0.0, 1e4, 1.0, Scope::PerChannel, true, "ABC scale A = a^2 (seed 003 Eq. 11)"},
             {"B", 1e-3, 1e9, 1000.0, Scope::Shared, false, "ABC sharpness B = b^2 (seed 003 Eq. 11)"},
             {"C", 1e-3, 5.0, 1.0, Scope::Shared, false, "ABC fall-off C = (c+1)/2 (seed 003 Eq. 11)"},
-            {"eta", 1.0, 100.0, 1.5, Scope::Shared, false, "Fresnel parameter eta (Cook-Torrance dielectric, seed 003 3.2)"}};
+            {"eta", 1.0, 100.0, 1.5, Scope::Shared, false, "Fresnel parameter eta (Cook-Torrance dielectric, seed 003 3.2)",
+             1.0, kUnbounded}};
   }
   template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
@@ -147,7 +148,8 @@ struct LowSmooth2 {
       t.push_back({"B" + s, 1e-3, 1e9, j == 1 ? 10.0 : 1000.0, Scope::Shared, false, "ABC sharpness, " + which + " (seed 003 Eq. 34)"});
       t.push_back({"C" + s, 1e-3, 5.0, 1.0, Scope::Shared, false, "ABC fall-off, " + which + " (seed 003 Eq. 34)"});
     }
-    t.push_back({"eta", 1.0, 100.0, 1.5, Scope::Shared, false, "Fresnel parameter eta of lobe 2 (Cook-Torrance dielectric)"});
+    t.push_back({"eta", 1.0, 100.0, 1.5, Scope::Shared, false, "Fresnel parameter eta of lobe 2 (Cook-Torrance dielectric)",
+                 1.0, kUnbounded});
     return t;
   }
   template <class T> static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {

@@ -4,12 +4,14 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/models/bbm_fit_text.h"
 #include "brdfkit/fresnel/bagher_fresnel.h"
 #include "brdfkit/fresnel/dielectric.h"
 #include "brdfkit/models/cook_torrance.h"
@@ -29,6 +31,31 @@ using LowCookTorrance =
 using BagherSgd =
     Named<CookTorrance<Sgd, BagherFresnel>, "cook-torrance-sgd-bagher2012",
           "kd/pi + ks F D G/(4 cos_i cos_o): SGD D, Bagher F0/F1 Fresnel, Smith G (Bagher 2012's published fits)">;
+
+// Ngan 2005's lobes (models/bbm_fit_text.h) and the brdfkit model of the same formula.
+const std::map<std::string, std::string> kNganModels = {
+    {"NganWard", "ward"},
+    {"NganWardDuer", "ward-duer"},
+    {"NganLafortune", "lafortune"},
+    {"NganCookTorrance", "cook-torrance"},
+    {"NganAshikhminShirley", "ashikhmin-shirley-ngan2005"},
+    {"NganBlinnPhong", "blinn-phong"},
+    {"NganHe", "he"}};
+
+// conventions.channel_scale: factors of every colour value per channel (1, 1, 1 when absent).
+std::array<double, 3> read_channel_scale(const nlohmann::json& doc, const std::string& where) {
+  std::array<double, 3> out{1.0, 1.0, 1.0};
+  if (!doc.contains("conventions") || !doc["conventions"].is_object() || !doc["conventions"].contains("channel_scale"))
+    return out;
+  const auto& x = doc["conventions"]["channel_scale"];
+  if (!x.is_array() || x.size() != 3) throw InputError(where, "conventions.channel_scale is not 3 numbers");
+  for (size_t c = 0; c < 3; ++c) {
+    if (!x[c].is_number() || !(x[c].get<double>() > 0) || !std::isfinite(x[c].get<double>()))
+      throw InputError(where, "conventions.channel_scale is not 3 positive numbers");
+    out[c] = x[c].get<double>();
+  }
+  return out;
+}
 
 const Model* find_model(const std::string& name) {
   for (const Model* m : all_models())
@@ -61,6 +88,10 @@ void put(ParamValues& v, const Model& m, const std::string& name, const std::arr
 
 std::array<double, 3> scaled(std::array<double, 3> x, double s) {
   for (double& v : x) v *= s;
+  return x;
+}
+std::array<double, 3> scaled(std::array<double, 3> x, const std::array<double, 3>& s) {
+  for (size_t c = 0; c < 3; ++c) x[c] *= s[c];
   return x;
 }
 
@@ -120,10 +151,14 @@ PublishedFits PublishedFits::read(const std::filesystem::path& file) {
   PublishedFits out;
   out.file_ = file;
   nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(where, std::string("not valid JSON: ") + e.what());
+  if (file.extension() == ".fit") {
+    doc = read_bbm_fit_text(file);
+  } else {
+    try {
+      doc = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(where, std::string("not valid JSON: ") + e.what());
+    }
   }
   if (!doc.is_object() || !doc.contains("materials") || !doc["materials"].is_object() || doc["materials"].empty())
     throw InputError(where, "no 'materials' object");
@@ -140,9 +175,11 @@ PublishedFits PublishedFits::read(const std::filesystem::path& file) {
   else if (out.lobe_ == "LowCookTorrance") out.model_ = "cook-torrance-low2012";
   else if (out.lobe_ == "Bagher") out.model_ = "cook-torrance-sgd-bagher2012";
   else if (out.lobe_ == "LowMicrofacetFit") out.model_ = "low-microfacet";
+  else if (const auto it = kNganModels.find(out.lobe_); it != kNganModels.end()) out.model_ = it->second;
   else {
     out.reason_ = "unknown lobe '" + out.lobe_ + "'";
   }
+  out.channel_scale_ = read_channel_scale(doc, where);
   return out;
 }
 
@@ -155,9 +192,49 @@ std::vector<std::string> PublishedFits::materials() const {
 
 namespace {
 
+// Ngan 2005's lobes (models/bbm_fit_text.cpp's conventions); `albedo(f)` is the file's albedo
+// times f and the file's channel scale.
+template <class Albedo>
+bool put_ngan_lobe(ParamValues& v, const Model& m, const std::string& name, const nlohmann::json& p,
+                   const std::string& lwhere, const Albedo& albedo) {
+  const auto shared = [&](const char* key) { return channels(p, key, lwhere); };
+  if (name == "NganWard" || name == "NganWardDuer") {  // the same formulas as ward.h and ward_duer.h
+    put(v, m, "ks", albedo(1.0));
+    put(v, m, "alpha", shared("roughness"));
+  } else if (name == "NganLafortune") {  // lafortune.h's normalization, one lobe
+    put(v, m, "ks", albedo(1.0));
+    put(v, m, "Cxy", shared("Cxy"));
+    put(v, m, "Cz", shared("Cz"));
+    put(v, m, "N", shared("sharpness"));
+  } else if (name == "NganCookTorrance") {  // albedo·DGF/(π ci co) = (4 albedo/π) · DFG/(4 ci co)
+    put(v, m, "ks", albedo(4.0 * kInvPi));
+    put(v, m, "alpha", shared("roughness"));
+    put(v, m, "F0", shared("eta"));
+  } else if (name == "NganAshikhminShirley") {
+    put(v, m, "ks", albedo(1.0));
+    put(v, m, "N", shared("sharpness"));
+    put(v, m, "F0", shared("fresnelReflectance"));
+  } else if (name == "NganBlinnPhong") {  // albedo (n+2)/(2π) cosⁿθh = 4 albedo · (n+2)/(8π) cosⁿθh
+    put(v, m, "ks", albedo(4.0));
+    put(v, m, "N", shared("sharpness"));
+  } else if (name == "NganHe") {
+    put(v, m, "ks", albedo(1.0));
+    put(v, m, "sigma0", shared("roughness"));
+    put(v, m, "tau", shared("autocorrelation"));
+    put(v, m, "eta", shared("eta"));
+    put(v, m, "k", {0.0, 0.0, 0.0});
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // The specular lobe `name` of a published file (parameters `p`) into the model's values, with the
 // file's conventions (DESIGN.md §10). False for a lobe this converter does not know.
-bool put_lobe(ParamValues& v, const Model& m, const std::string& name, const nlohmann::json& p, const std::string& lwhere) {
+bool put_lobe(ParamValues& v, const Model& m, const std::string& name, const nlohmann::json& p, const std::string& lwhere,
+              const std::array<double, 3>& colour) {
+  const auto albedo = [&](double factor) { return scaled(scaled(channels(p, "albedo", lwhere), factor), colour); };
+  if (name.starts_with("Ngan")) return put_ngan_lobe(v, m, name, p, lwhere, albedo);
   if (name == "LowSmooth") {
     for (const char* k : {"A", "B", "C", "eta"}) put(v, m, k, channels(p, k, lwhere));
   } else if (name == "LowAshikhminShirley") {
@@ -208,9 +285,9 @@ Brdf PublishedFits::brdf(const std::string& material) const {
     const std::string name = lobe_name(lobe, mwhere);
     const std::string lwhere = mwhere + ", lobe '" + name + "'";
     if (name == "Lambertian") {
-      put(v, *m, "kd", channels(lobe["params"], "albedo", lwhere));  // conventions: albedo[c]/π
+      put(v, *m, "kd", scaled(channels(lobe["params"], "albedo", lwhere), channel_scale_));  // albedo[c]/π
       have_diffuse = true;
-    } else if (name == lobe_ && put_lobe(v, *m, name, lobe["params"], lwhere)) {
+    } else if (name == lobe_ && put_lobe(v, *m, name, lobe["params"], lwhere, channel_scale_)) {
       have_lobe = true;
     } else {
       throw InputError(lwhere, "unexpected lobe in a '" + lobe_ + "' file");
@@ -227,7 +304,8 @@ std::vector<std::filesystem::path> published_fit_files(const std::filesystem::pa
   std::vector<std::filesystem::path> out;
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-    if (e.is_regular_file() && e.path().extension() == ".json") out.push_back(e.path());
+    if (e.is_regular_file() && (e.path().extension() == ".json" || e.path().extension() == ".fit"))
+      out.push_back(e.path());
   if (ec) throw InputError(dir.string(), "cannot list the folder: " + ec.message());
   std::sort(out.begin(), out.end());
   return out;

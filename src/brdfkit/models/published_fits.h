@@ -13,10 +13,14 @@
 //                                                        in place of the file's fitted Eq. 9 approximation
 //   LowMicrofacetFit     low-microfacet                  A = A[c]/π (the file's lobe carries a 1/π that seed 003
 //                                                        Eq. 15 does not print), B, C, eta as published
+//   Ngan* (BBM .fit text,     ward, ward-duer, lafortune,      as models/bbm_fit_text.cpp's conventions: ks = albedo,
+//   read directly)           cook-torrance, blinn-phong,      4·albedo/π (Cook-Torrance), 4·albedo (Blinn-Phong);
+//                            ashikhmin-shirley-ngan2005, he   every colour × MERL's channel factors 1, 1.15, 1.66
 // plus the Lambertian albedo → kd everywhere. Values are loaded as published, even where a
 // fitting bound of the model is narrower (one Cook-Torrance roughness is 2.09 > 2), unless the
 // model is undefined there (not finite, or throwing, at a few direction pairs): such a value is
 // refused naming the file, material, parameter and channel.
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -51,9 +55,10 @@ class PublishedFits {
   std::string lobe_;    // the specular lobe's name in the file
   std::string model_;   // brdfkit model name, empty if unsupported
   std::string reason_;
+  std::array<double, 3> channel_scale_{1.0, 1.0, 1.0};  // conventions.channel_scale: every colour × it
 };
 
-// The *.json files of a published-fits folder, sorted by name.
+// The published-fit files of a folder (*.json, and BBM *.fit text), sorted by name.
 std::vector<std::filesystem::path> published_fit_files(const std::filesystem::path& dir);
 
 // Löw 2012's Cook-Torrance as their published fits define it: Beckmann D, Cook-Torrance

@@ -45,7 +45,8 @@ const Registry<const Model*>& model_registry() {
     for (const Model* m : cook_torrance_models()) add(m);
     for (const Model* m : {instance<Ward>(), instance<WardAniso>(), instance<WardDuer>(), instance<BlinnPhongLobe>(),
                            instance<Lafortune>(), instance<Lafortune2>(), instance<AshikhminShirley>(),
-                           instance<AshikhminShirleyDielectric>(), instance<HeTorrance>(), instance<LowSmooth>(),
+                           instance<AshikhminShirleyDielectric>(), instance<AshikhminShirleyNgan>(),
+                           instance<HeTorrance>(), instance<LowSmooth>(),
                            instance<LowSmooth2>(), low_microfacet_model(), holzschuch_pacanowski_model(),
                            low_cook_torrance_model(), bagher_sgd_model()})
       add(m);

@@ -16,7 +16,7 @@ const std::set<std::string>& covered() {
       "lambert", "pbrt-diffuse",                                                  // test_lambert_reference.cpp
       "ward", "ward-aniso", "ward-duer",                                          // test_ward_reference.cpp
       "blinn-phong", "lafortune", "lafortune-2", "ashikhmin-shirley",             // test_phong_family_reference.cpp
-      "ashikhmin-shirley-dielectric",
+      "ashikhmin-shirley-dielectric", "ashikhmin-shirley-ngan2005",
       "cook-torrance", "cook-torrance-beckmann", "cook-torrance-blinn-phong",    // test_cook_torrance_reference.cpp
       "cook-torrance-gaussian", "cook-torrance-ggx", "cook-torrance-gtr", "cook-torrance-exponential",
       "cook-torrance-sgd", "cook-torrance-exponential-power", "cook-torrance-schlick-rational",

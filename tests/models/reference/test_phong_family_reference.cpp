@@ -3,7 +3,7 @@
 //   blinn-phong   kd/π + ks (N+2)/(8π) cosᴺθh                          (brdfkit's constant, DESIGN.md §6)
 //   lafortune(-2) kd/π + Σ ks (N+2)/(2π m^N) max(0, Cxy(ux vx + uy vy) + Cz uz vz)^N, m = max(|Cxy|, |Cz|)
 //                                                                     (Lafortune 1997 Eq. 6, Ngan's normalization)
-//   ashikhmin-shirley(-dielectric)  kd/π + sqrt((nu+1)(nv+1))/(8π) (n·h)^{nu cos²φh + nv sin²φh}
+//   ashikhmin-shirley(-dielectric, -ngan2005)  kd/π + sqrt((nu+1)(nv+1))/(8π) (n·h)^{nu cos²φh + nv sin²φh}
 //                   / ((h·k) max(n·k1, n·k2)) F(k·h), nu = nv = N     (Ashikhmin & Shirley 2000 Eq. 4)
 // Every term is closed-form: bound 1e-10 relative (1e-12 on the albedos).
 #include <gtest/gtest.h>
@@ -115,6 +115,26 @@ TEST(PhongFamilyReference, AshikhminShirleyDielectric) {
         return param(m, v, "kd", c) / kPi +
                param(m, v, "ks", c) * ashikhmin_lobe(wi, wo, nn, nn, norm) *
                    fresnel_dielectric(wi.dot(half_vector(wi, wo)), param(m, v, "eta", c));
+      };
+    };
+    const std::string label = "N=" + std::to_string(n);
+    expect_matches_reference(m, v, reference(kAshikhminNorm), 1e-10, label);
+    expect_detects_five_percent(m, v, reference(kAshikhminNorm / 1.05), 1e-10, label);
+  }
+}
+
+// Seed 002's form: a specular colour ks per channel times one lobe shape with one Schlick F0.
+TEST(PhongFamilyReference, AshikhminShirleyNgan) {
+  const Model& m = model_by_name("ashikhmin-shirley-ngan2005");
+  for (double n : {12.0, 600.0}) {
+    std::vector<Setting> s = kDiffuse;
+    s.insert(s.end(), {{"ks", 0.04, 0}, {"ks", 0.3, 1}, {"ks", 0.9, 2}, {"N", n}, {"F0", 0.2}});
+    const ParamValues v = values_of(m, s);
+    auto reference = [&m, v](double norm) -> Reference {
+      return [&m, v, norm](int c, const Vec3d& wi, const Vec3d& wo) {
+        const double nn = param(m, v, "N", c);
+        return param(m, v, "kd", c) / kPi + param(m, v, "ks", c) * ashikhmin_lobe(wi, wo, nn, nn, norm) *
+                                                schlick(param(m, v, "F0", c), wi.dot(half_vector(wi, wo)));
       };
     };
     const std::string label = "N=" + std::to_string(n);
