@@ -23,10 +23,11 @@ struct ImportArgs {
 int run_import(const ImportArgs& a) {
   if (std::filesystem::path(a.file).extension() != ".fit") throw InputError(a.file, "is not a BBM .fit text file");
   check_output_file(a.output);
-  const PublishedFits fits = PublishedFits::read(a.file);
+  const nlohmann::json doc = read_bbm_fit_text(a.file);
+  const PublishedFits fits = PublishedFits::from_document(doc, a.file);
   if (!fits.supported()) throw InputError(a.file, "unsupported: " + fits.unsupported_reason());
   for (const auto& material : fits.materials()) fits.brdf(material);
-  write_file_atomically(a.output, json_text(read_bbm_fit_text(a.file)) + "\n");
+  write_file_atomically(a.output, json_text(doc) + "\n");
   std::cout << fmt::format("{} materials, model {}: wrote {}\n", fits.materials().size(), fits.model_name(), a.output);
   return 0;
 }

@@ -6,7 +6,8 @@
 // Cook-Torrance dielectric F(wi·h; η), the form of Löw 2012's published fits (their
 // `conventions`). `ashikhmin-shirley-ngan2005`: seed 002's form (§3.1, a specular colour times a
 // lobe shape shared by the channels), ks per channel times Schlick F(wi·h; F0) with one F0, as
-// Ngan's published fits define it (published-fits/ngan2005/README.md). Reciprocal: wi·h = wo·h and the max is symmetric.
+// Ngan's published fits define it (published-fits/ngan2005/README.md). Reciprocal: wi·h = wo·h
+// and the max is symmetric.
 // Sampling: the half vector with density (N+1)/(2π) cosᴺθh (Ashikhmin-Shirley 2000 §3).
 #include <cmath>
 #include <optional>

@@ -92,12 +92,15 @@ class LineReader {
 nlohmann::json read_bbm_fit_text(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file.string(), "cannot open the file");
-  nlohmann::json doc{{"source", ""}, {"materials", nlohmann::json::object()}};
-  std::string line, specular;
+  nlohmann::json doc{{"materials", nlohmann::json::object()}};
+  std::string line, specular, source;
   for (int number = 1; std::getline(in, line); ++number) {
     const std::string where = file.string() + ":" + std::to_string(number);
-    if (line.starts_with("#")) {
-      doc["source"] = doc["source"].get<std::string>() + (doc["source"].empty() ? "" : " ") + line.substr(1);
+    if (line.starts_with("#")) {  // the header: where the fits come from
+      const size_t text = line.find_first_not_of("# ");
+      if (text == std::string::npos) continue;
+      if (!source.empty()) source += ' ';
+      source.append(line, text);
       continue;
     }
     LineReader r(line, where);
@@ -117,6 +120,7 @@ nlohmann::json read_bbm_fit_text(const std::filesystem::path& file) {
     doc["materials"][name] = std::move(list);
   }
   if (doc["materials"].empty()) throw InputError(file.string(), "no material line");
+  doc["source"] = source;
   doc["conventions"] = ngan2005_conventions(specular);
   return doc;
 }

@@ -148,18 +148,20 @@ PublishedFits PublishedFits::read(const std::filesystem::path& file) {
   const std::string where = file.string();
   std::ifstream in(file);
   if (!in) throw InputError(where, "cannot open the file");
+  if (file.extension() == ".fit") return from_document(read_bbm_fit_text(file), file);
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where, std::string("not valid JSON: ") + e.what());
+  }
+  return from_document(std::move(doc), file);
+}
+
+PublishedFits PublishedFits::from_document(nlohmann::json doc, const std::filesystem::path& file) {
+  const std::string where = file.string();
   PublishedFits out;
   out.file_ = file;
-  nlohmann::json doc;
-  if (file.extension() == ".fit") {
-    doc = read_bbm_fit_text(file);
-  } else {
-    try {
-      doc = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-      throw InputError(where, std::string("not valid JSON: ") + e.what());
-    }
-  }
   if (!doc.is_object() || !doc.contains("materials") || !doc["materials"].is_object() || doc["materials"].empty())
     throw InputError(where, "no 'materials' object");
   out.materials_ = std::move(doc["materials"]);
@@ -197,31 +199,31 @@ namespace {
 template <class Albedo>
 bool put_ngan_lobe(ParamValues& v, const Model& m, const std::string& name, const nlohmann::json& p,
                    const std::string& lwhere, const Albedo& albedo) {
-  const auto shared = [&](const char* key) { return channels(p, key, lwhere); };
+  const auto values = [&](const char* key) { return channels(p, key, lwhere); };
   if (name == "NganWard" || name == "NganWardDuer") {  // the same formulas as ward.h and ward_duer.h
     put(v, m, "ks", albedo(1.0));
-    put(v, m, "alpha", shared("roughness"));
+    put(v, m, "alpha", values("roughness"));
   } else if (name == "NganLafortune") {  // lafortune.h's normalization, one lobe
     put(v, m, "ks", albedo(1.0));
-    put(v, m, "Cxy", shared("Cxy"));
-    put(v, m, "Cz", shared("Cz"));
-    put(v, m, "N", shared("sharpness"));
+    put(v, m, "Cxy", values("Cxy"));
+    put(v, m, "Cz", values("Cz"));
+    put(v, m, "N", values("sharpness"));
   } else if (name == "NganCookTorrance") {  // albedo·DGF/(π ci co) = (4 albedo/π) · DFG/(4 ci co)
     put(v, m, "ks", albedo(4.0 * kInvPi));
-    put(v, m, "alpha", shared("roughness"));
-    put(v, m, "F0", shared("eta"));
+    put(v, m, "alpha", values("roughness"));
+    put(v, m, "F0", values("eta"));
   } else if (name == "NganAshikhminShirley") {
     put(v, m, "ks", albedo(1.0));
-    put(v, m, "N", shared("sharpness"));
-    put(v, m, "F0", shared("fresnelReflectance"));
+    put(v, m, "N", values("sharpness"));
+    put(v, m, "F0", values("fresnelReflectance"));
   } else if (name == "NganBlinnPhong") {  // albedo (n+2)/(2π) cosⁿθh = 4 albedo · (n+2)/(8π) cosⁿθh
     put(v, m, "ks", albedo(4.0));
-    put(v, m, "N", shared("sharpness"));
+    put(v, m, "N", values("sharpness"));
   } else if (name == "NganHe") {
     put(v, m, "ks", albedo(1.0));
-    put(v, m, "sigma0", shared("roughness"));
-    put(v, m, "tau", shared("autocorrelation"));
-    put(v, m, "eta", shared("eta"));
+    put(v, m, "sigma0", values("roughness"));
+    put(v, m, "tau", values("autocorrelation"));
+    put(v, m, "eta", values("eta"));
     put(v, m, "k", {0.0, 0.0, 0.0});
   } else {
     return false;

@@ -35,6 +35,8 @@ class PublishedFits {
  public:
   // Parses one file; throws InputError naming the file (unreadable, not JSON, no `materials`).
   static PublishedFits read(const std::filesystem::path& file);
+  // From a document already read (models/bbm_fit_text.h); `file` names it in messages.
+  static PublishedFits from_document(nlohmann::json doc, const std::filesystem::path& file);
 
   const std::filesystem::path& file() const { return file_; }
   std::string stem() const { return file_.stem().string(); }
