@@ -20,6 +20,7 @@
 #include "brdfkit/fit/fit_job.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"
+#include "brdfkit/fit/procedure/search_box.h"
 #include "brdfkit/measured/load.h"
 #include "command.h"
 #include "fit_options.h"
@@ -79,6 +80,8 @@ int run_fit(const FitArgs& a) {
   const Model& model = model_for(a);
   const std::vector<std::string> report = fit::parse_metric_list(a.report);
   fit::validate(a.settings);  // names a bad setting before any work
+  const Model* const models[] = {&model};
+  fit::check_search_bounds(models, a.settings.bounds);
   check_output_file(a.output);  // and an output that cannot be written, before a fit of minutes
   if (!a.for_target.empty()) check_output_file(export_path(a));
   const auto data = load_measured(a.file);

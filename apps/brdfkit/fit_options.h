@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "brdfkit/core/error.h"
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/fit/procedure/procedure.h"
 #include "brdfkit/fit/settings/fit_settings.h"
@@ -33,6 +34,25 @@ inline void add_fit_settings(CLI::App& sub, fit::FitSettings& s) {
                  "Widen every metric grid step by this factor (1 = the papers' grids; quick looks only; 1 to " +
                      std::to_string(fit::FitSettings::kMaxCoarsen) + ")")
       ->capture_default_str();
+  sub.add_option("--bounds")
+      ->description("Search box of a parameter instead of the model's, NAME=LOWER:UPPER (repeatable; inside the "
+                    "formula's domain, see `brdfkit models`; LOWER = UPPER holds it there)")
+      ->take_all()
+      ->type_name("NAME=LO:HI")
+      ->check(
+          [](const std::string& v) {
+            try {
+              fit::parse_search_bound(v);
+              return std::string();
+            } catch (const SettingError& e) {
+              return e.detail();
+            }
+          },
+          "NAME=LOWER:UPPER")
+      ->each([&s](const std::string& v) {
+        const auto [name, box] = fit::parse_search_bound(v);
+        s.bounds.insert_or_assign(name, box);
+      });
   sub.add_option("--threshold", s.threshold,
                  "hp-2step: a cell is diffraction-dominated where |det(grad log rho, grad f)| < this (seed 004 §4.2)")
       ->capture_default_str();

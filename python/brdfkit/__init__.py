@@ -80,7 +80,8 @@ def fit(data, model, *, report=None, progress=None, **settings) -> Fit:
     or a Model. settings: the keyword arguments of brdfkit.FitSettings, named as the command
     line's flags without dashes: procedure ('ngan', 'bagher', 'low-e1', 'low-e2', 'hp-2step',
     'hp-1step'; None: a plain fit under `metric`), metric, per_channel_shape, coarsen, threshold,
-    starts, seed, max_iterations, coarse_to_fine, scan_start. report: the metric ids to report
+    starts, seed, max_iterations, coarse_to_fine, scan_start, bounds ({'alpha': (0.001, 3.0)}: the
+    search box of a parameter instead of the model's). report: the metric ids to report
     (None: every metric). progress: called with each line the procedure logs.
 
     Returns a Fit: model, brdf (the fitted Brdf; brdf.params the values), metrics, iterations,

@@ -14,6 +14,7 @@
 #include "brdfkit/fit/fit_job.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/param_source.h"
+#include "brdfkit/fit/procedure/search_box.h"
 #include "python_api.h"
 
 namespace brdfkit::python {
@@ -64,6 +65,8 @@ Fit run_fit(Measured& data, const Model& model, const fit::FitSettings& settings
             const py::object& progress) {
   const std::vector<std::string> ids = fit::parse_metric_list(report);
   fit::validate(settings);
+  const Model* const models[] = {&model};
+  fit::check_search_bounds(models, settings.bounds);
   const fit::Progress log = progress_callback(progress);
   py::gil_scoped_release release;
   const std::string sha = data.sha256();
@@ -107,10 +110,12 @@ metric: the metric of a plain fit ('' = ngan), or an override of the procedure's
 per_channel_shape: one lobe shape per channel.  coarsen: widens every metric grid step.
 threshold: hp-2step's diffraction threshold.  starts, seed: random starts and their seed.
 max_iterations: per start and level.  coarse_to_fine: solve on sub-samples first.
-scan_start: start 0 at the best point of a scan of the shape parameters' box.)")
+scan_start: start 0 at the best point of a scan of the shape parameters' box.
+bounds: {name: (lower, upper)}, the search box of those parameters instead of the model's
+  (inside the formula's domain; lower == upper holds the parameter there).)")
       .def(py::init([](const std::optional<std::string>& procedure, const std::optional<std::string>& metric,
                        bool per_channel_shape, int coarsen, double threshold, int starts, std::uint64_t seed,
-                       int max_iterations, bool coarse_to_fine, bool scan_start) {
+                       int max_iterations, bool coarse_to_fine, bool scan_start, const fit::SearchBounds& bounds) {
              FitSettings s{.procedure = procedure.value_or(""),
                            .metric = metric.value_or(""),
                            .per_channel_shape = per_channel_shape,
@@ -120,7 +125,8 @@ scan_start: start 0 at the best point of a scan of the shape parameters' box.)")
                            .seed = seed,
                            .max_iterations = max_iterations,
                            .coarse_to_fine = coarse_to_fine,
-                           .scan_start = scan_start};
+                           .scan_start = scan_start,
+                           .bounds = bounds};
              fit::validate(s);
              return s;
            }),
@@ -128,7 +134,7 @@ scan_start: start 0 at the best point of a scan of the shape parameters' box.)")
            py::arg("per_channel_shape") = d.per_channel_shape, py::arg("coarsen") = d.coarsen,
            py::arg("threshold") = d.threshold, py::arg("starts") = d.starts, py::arg("seed") = d.seed,
            py::arg("max_iterations") = d.max_iterations, py::arg("coarse_to_fine") = d.coarse_to_fine,
-           py::arg("scan_start") = d.scan_start)
+           py::arg("scan_start") = d.scan_start, py::arg("bounds") = fit::SearchBounds{})
       .def_readonly("procedure", &FitSettings::procedure)
       .def_readonly("metric", &FitSettings::metric)
       .def_readonly("per_channel_shape", &FitSettings::per_channel_shape)
@@ -139,6 +145,7 @@ scan_start: start 0 at the best point of a scan of the shape parameters' box.)")
       .def_readonly("max_iterations", &FitSettings::max_iterations)
       .def_readonly("coarse_to_fine", &FitSettings::coarse_to_fine)
       .def_readonly("scan_start", &FitSettings::scan_start)
+      .def_readonly("bounds", &FitSettings::bounds)
       .def_property_readonly("fitting_metric", [](const FitSettings& s) { return fit::fitting_metric(s); },
                              "The metric the fit minimizes.");
 }

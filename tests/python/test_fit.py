@@ -30,6 +30,7 @@ def same_numbers(a, b, path=""):
 @pytest.mark.parametrize("model,settings,args", [
     ("cook-torrance-ggx", {"procedure": "ngan"}, ["--procedure", "ngan"]),
     ("ward", {"metric": "low-e2", "starts": 3, "seed": 5}, ["--metric", "low-e2", "--starts", "3", "--seed", "5"]),
+    ("cook-torrance-ggx", {"bounds": {"alpha": (0.3, 0.4)}}, ["--bounds", "alpha=0.3:0.4"]),
 ])
 def test_fit_is_the_clis(tmp_path, model, settings, args):
     file = data_file("cornell", "krylon_blue.brdf")
@@ -72,6 +73,10 @@ def test_settings_are_named_in_errors():
         brdfkit.fit(file, "ward", starts=0)
     with pytest.raises(ValueError, match="procedure"):
         brdfkit.fit(file, "ward", procedure="no-such-procedure")
+    with pytest.raises(brdfkit.SettingError, match="bounds.*no parameter 'alpa'"):
+        brdfkit.fit(file, "ward", bounds={"alpa": (0.1, 0.2)})
+    with pytest.raises(brdfkit.SettingError, match="bounds.*domain"):
+        brdfkit.fit(file, "ward", bounds={"alpha": (0.0, 0.2)})
     with pytest.raises(TypeError, match="no_such_setting"):
         brdfkit.fit(file, "ward", no_such_setting=1)
 

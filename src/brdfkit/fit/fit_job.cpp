@@ -53,6 +53,7 @@ nlohmann::json fit_job_json(const FitJobResult& r, const FitSettings& settings, 
   j["fit"]["best_start"] = r.fit.best_start;
   j["fit"]["start_scan_points"] = r.fit.scan_points;  // start 0 = best of this many scan points; 0: the defaults
   j["fit"]["steps"] = r.steps;
+  if (!settings.bounds.empty()) j["fit"]["bounds"] = settings.bounds;  // {"alpha": [lower, upper]}
   if (!material.empty()) j["data"]["material"] = material;
   return j;
 }
@@ -86,6 +87,7 @@ bool fit_job_matches(const nlohmann::json& saved, const std::string& model, cons
       !field_is<std::uint64_t>(f, "seed", opt.seed) || !field_is<int>(f, "max_iterations", opt.max_iterations) ||
       !field_is<bool>(f, "per_channel_shape", opt.per_channel_shape))
     return false;
+  if (opt.bounds.empty() ? f.contains("bounds") : !field_is<SearchBounds>(f, "bounds", opt.bounds)) return false;
   // Values: the model's parameters, each three finite numbers (a truncated or edited file is refitted).
   const Model* m = nullptr;
   try {

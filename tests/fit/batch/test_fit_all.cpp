@@ -320,6 +320,40 @@ TEST_F(FitAll, FitWithAProcedureSavesItAndErrorReproducesIt) {
   EXPECT_NEAR(alpha, 0.15, 0.15 * 0.05);
 }
 
+// Every fitted value lies in its search box: the model's by default, the user's with --bounds
+// (here a box for Ward's α that excludes the truths 0.08–0.3, so the fit ends on its edge).
+TEST_F(FitAll, EveryFittedValueStaysInsideItsSearchBoxAndBoundsReplaceTheBox) {
+  const auto inside = [](const fs::path& dir, const std::map<std::string, std::pair<double, double>>& user) {
+    int checked = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+      if (e.path().extension() != ".json" || e.path().filename() == "summary.json") continue;
+      const nlohmann::json j = read_json(e.path());
+      if (!j.contains("params")) continue;
+      const ParamTable& table = model_by_name(j["model"].get<std::string>()).params();
+      for (const auto& p : j["params"]) {
+        const ParamSpec& s = table[size_t(find_param(table, p["name"].get<std::string>()))];
+        const auto box = user.contains(s.name) ? user.at(s.name) : std::pair{s.lower, s.upper};
+        for (double v : p["values"].get<std::vector<double>>()) {
+          EXPECT_GE(v, box.first) << e.path() << " " << s.name;
+          EXPECT_LE(v, box.second) << e.path() << " " << s.name;
+          ++checked;
+        }
+      }
+    }
+    return checked;
+  };
+  const std::string models = " --models lambert,ward,blinn-phong,cook-torrance-ggx --coarsen 4 --report ngan -o ";
+  ASSERT_EQ(run_cli("fit-all " + data() + models + out("boxed")).exit_code, 0);
+  EXPECT_EQ(inside(out("boxed"), {}), 3 * (3 + 9 + 9 + 12));
+
+  const auto r = run_cli("fit-all " + data() + models + out("user_box") + " --bounds alpha=0.4:0.6");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(inside(out("user_box"), {{"alpha", {0.4, 0.6}}}), 3 * (3 + 9 + 9 + 12));
+  const nlohmann::json ward = read_json(out("user_box") + "/shiny-blue/ward.json");
+  EXPECT_DOUBLE_EQ(ward["params"][2]["values"][0].get<double>(), 0.4);  // truth 0.3: the box's edge
+  EXPECT_EQ(ward["fit"]["bounds"]["alpha"], nlohmann::json::array({0.4, 0.6}));
+}
+
 TEST_F(FitAll, BadOptionsExitWithTwoAndNameTheProblem) {
   const std::pair<std::string, std::string> cases[] = {
       {"fit-all " + data() + " --models no-such-model -o " + out("bad"), "no-such-model"},
@@ -330,6 +364,10 @@ TEST_F(FitAll, BadOptionsExitWithTwoAndNameTheProblem) {
       {"fit-all " + out("empty_dir_absent") + "/ --models ward -o " + out("bad"), "no measured file"},
       {"fit-all " + data() + " --models ward --compare " + out("none.json") + " -o " + out("bad"), "none.json"},
       {"fit " + data() + "/matte-red.binary --model ward --procedure ngan --metric ngan -o " + out("x.json"), "excludes"},
+      {"fit-all " + data() + " --models ward --bounds nope=0:1 -o " + out("bad"), "parameter 'nope'"},
+      {"fit " + data() + "/matte-red.binary --model ward --bounds alpha=0.2:0.1 -o " + out("x.json"), "--bounds"},
+      {"fit " + data() + "/matte-red.binary --model ward --bounds alpha=0:0.5 -o " + out("x.json"), "domain"},
+      {"fit " + data() + "/matte-red.binary --model ward --bounds alpha=0.1 -o " + out("x.json"), "NAME=LOWER:UPPER"},
   };
   fs::create_directories(out("empty_dir_absent"));
   for (const auto& [args, needle] : cases) {

@@ -23,6 +23,7 @@
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"
 #include "brdfkit/measured/load.h"
+#include "brdfkit/fit/procedure/search_box.h"
 #include "brdfkit/models/published_fits.h"
 
 namespace brdfkit::fit {
@@ -463,6 +464,7 @@ BatchSummary run_fit_batch(const std::vector<BatchInput>& inputs, const std::vec
                            const std::atomic<bool>* stop) {
   settings.validate();
   if (models.empty()) throw SettingError("models", "no model to fit");
+  check_search_bounds(models, settings.fit.bounds);
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) throw InputError(out_dir.string(), "cannot create the output folder");

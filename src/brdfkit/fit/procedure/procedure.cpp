@@ -5,6 +5,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/procedure/per_channel_shape.h"
 #include "brdfkit/fit/procedure/procedure_steps.h"
+#include "brdfkit/fit/procedure/search_box.h"
 
 namespace brdfkit::fit {
 
@@ -72,6 +73,13 @@ double metric_value(std::string_view id, const Model& model, const ParamValues& 
 ProcedureResult run_procedure(const Model& model, MetricStore& store, const FitSettings& settings,
                               const Progress& progress) {
   validate(settings);
+  if (!settings.bounds.empty()) {
+    // Every procedure and the solver read the box from the model's table.
+    const SearchBox boxed(model, settings.bounds);
+    FitSettings s = settings;
+    s.bounds.clear();
+    return run_procedure(boxed, store, s, progress);
+  }
   if (settings.procedure.empty()) {
     // A plain fit under a metric is the `ngan` preset with its metric replaced.
     FitSettings s = settings;

@@ -4,9 +4,14 @@
 // the command line shows it as a flag, `max_iterations` as `--max-iterations`). validate() names
 // the first bad setting and what it accepts (SettingError).
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
 
 namespace brdfkit::fit {
+
+// Search boxes by parameter name, each [lower, upper] for every channel (fit/procedure/search_box.h).
+using SearchBounds = std::map<std::string, std::pair<double, double>>;
 
 struct FitSettings {
   // What is minimized.
@@ -28,6 +33,9 @@ struct FitSettings {
   // Start 0 is the best point of a scan of the shape parameters' box (engine/start_scan.h), which
   // includes the table's defaults; false: the defaults.
   bool scan_start = true;
+  // The user's search box of some parameters, replacing the model's default box (the formula's
+  // domain still applies; checked against the model where the fit starts).
+  SearchBounds bounds;
 
   // Ranges a setting accepts.
   static constexpr int kMaxStarts = 1000;
@@ -40,5 +48,9 @@ struct FitSettings {
   // The metric the fit minimizes: `metric`, else the procedure's (passed in), else ngan.
   std::string fitting_metric(const std::string& procedure_metric) const;
 };
+
+// One bound as the command line writes it, "NAME=LOWER:UPPER" (`--bounds alpha=0.001:3`);
+// SettingError ("bounds") naming what is wrong otherwise.
+std::pair<std::string, std::pair<double, double>> parse_search_bound(const std::string& text);
 
 }  // namespace brdfkit::fit
