@@ -130,7 +130,7 @@ def fit_all(inputs, models="single-lobe", out_dir="results/fits", *, report=DEFA
     names = _brdfkit._batch_models(models if isinstance(models, str) else ",".join(models))
     report_spec = report if report == "all" else ",".join(report)
     fit_settings = FitSettings(**settings)
-    metric = _brdfkit._batch_check(fit_settings, report_spec, compare or "")
+    metric = _brdfkit._batch_check(fit_settings, report_spec, compare or "", names)
     out_dir = _os.fspath(out_dir)
     _os.makedirs(out_dir, exist_ok=True)
     started = _time.monotonic()

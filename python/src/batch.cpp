@@ -9,6 +9,7 @@
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/procedure/procedure.h"
+#include "brdfkit/fit/procedure/search_box.h"
 #include "brdfkit/models/model_sets.h"
 #include "python_api.h"
 
@@ -93,7 +94,9 @@ void bind_batch(py::module_& m) {
     for (const Model* model : parse_model_set(list)) out.emplace_back(model->name());
     return out;
   }, py::arg("list"));
-  m.def("_batch_check", [](const fit::FitSettings& fit, const std::string& report, const std::string& compare) {
+  m.def("_batch_check", [](const fit::FitSettings& fit, const std::string& report, const std::string& compare,
+                           const std::vector<std::string>& models) {
+    fit::check_search_bounds(models_of(models), fit.bounds);
     return fit::fitting_metric(batch_settings(fit, report, compare).fit);
   });
   m.def("_run_batch_fit", [](const std::string& material, const std::string& file, const std::string& model,

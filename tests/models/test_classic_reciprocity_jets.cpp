@@ -9,10 +9,13 @@
 #include "brdfkit/analysis/model_checks.h"
 #include "brdfkit/models/ashikhmin_shirley.h"
 #include "brdfkit/models/blinn_phong_lobe.h"
+#include "brdfkit/models/cook_torrance_anisotropic.h"
 #include "brdfkit/models/lafortune.h"
 #include "brdfkit/models/low_smooth.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
+#include "brdfkit/ndf/beckmann_anisotropic.h"
+#include "brdfkit/ndf/ggx_anisotropic.h"
 #include "support/catalogue_cases.h"
 
 namespace brdfkit {
@@ -94,7 +97,8 @@ template <class M> void check_jets(const ModelCase& mc) {
 }
 
 using Types = std::tuple<Ward, WardAniso, WardDuer, BlinnPhongLobe, Lafortune, Lafortune2, AshikhminShirley,
-                         AshikhminShirleyDielectric, LowSmooth, LowSmooth2>;
+                         AshikhminShirleyDielectric, LowSmooth, LowSmooth2, CookTorranceAnisotropic<GgxAnisotropic>,
+                         CookTorranceAnisotropic<BeckmannAnisotropic>>;
 
 template <size_t I = 0> void dispatch_jets(const ModelCase& mc, int& found) {
   if constexpr (I < std::tuple_size_v<Types>) {

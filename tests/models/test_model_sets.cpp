@@ -38,6 +38,10 @@ TEST(ModelSets, LobeCountsAndSetsComeFromTheParameterTables) {
   const auto renderer = parse_model_set("renderer");
   EXPECT_EQ(renderer.size(), 9u);
   for (const Model* m : renderer) EXPECT_TRUE(is_renderer_model(*m)) << m->name();
+  // Lobes turned by a fitted tangent angle: their own set, not in single-lobe.
+  std::vector<std::string> aniso;
+  for (const Model* m : parse_model_set("anisotropic")) aniso.emplace_back(m->name());
+  EXPECT_EQ(aniso, (std::vector<std::string>{"cook-torrance-beckmann-aniso", "cook-torrance-ggx-aniso", "ward-aniso"}));
   const auto list = parse_model_set("ward,lambert,ward");
   ASSERT_EQ(list.size(), 2u);
   EXPECT_EQ(list[0]->name(), "ward");

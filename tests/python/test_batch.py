@@ -91,6 +91,8 @@ def test_bad_batch_input_raises_before_any_fit(tmp_path):
         brdfkit.batch.fit_all(tmp_path / "no-such-folder", MODELS, tmp_path / "out")
     with pytest.raises(ValueError, match="no-such-model"):
         brdfkit.batch.fit_all(cornell(), ["no-such-model"], tmp_path / "out")
+    with pytest.raises(brdfkit.SettingError, match="bounds.*'alpa'"):
+        brdfkit.batch.fit_all(cornell(), ["ward", "lambert"], tmp_path / "out", bounds={"alpa": (0.1, 0.2)})
     assert not (tmp_path / "out").exists() or not os.listdir(tmp_path / "out")
 
 

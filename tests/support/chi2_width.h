@@ -68,6 +68,8 @@ inline const std::vector<PowerCase>& power_cases() {
       {"cook-torrance-sawicki-rational", {{"N", -0.5}}, {}, 30000, true},
       {"ward", {{"alpha", 1}}},
       {"ward-aniso", {{"alpha_x", 1}, {"alpha_y", 1}}},
+      {"cook-torrance-beckmann-aniso", {{"alpha_x", 1}, {"alpha_y", 1}}, {{"alpha_y", 0.4}, {"phi_t", 0.6}}},
+      {"cook-torrance-ggx-aniso", {{"alpha_x", 1}, {"alpha_y", 1}}, {{"alpha_y", 0.4}, {"phi_t", 0.6}}},
       {"ward-duer", {{"alpha", 1}}},
       {"blinn-phong", {{"N", -0.5}}},
       {"lafortune", {{"N", -0.5}}},

@@ -24,6 +24,8 @@ bool is_renderer_model(const Model& model) {
   return false;
 }
 
+bool is_oriented(const Model& model) { return find_param(model.params(), "phi_t") >= 0; }
+
 std::vector<const Model*> parse_model_set(const std::string& spec) {
   std::vector<const Model*> out;
   if (spec == "all") {
@@ -32,7 +34,12 @@ std::vector<const Model*> parse_model_set(const std::string& spec) {
   }
   if (spec == "single-lobe") {
     for (const Model* m : all_models())
-      if (lobe_count(*m) == 1 && !is_renderer_model(*m)) out.push_back(m);
+      if (lobe_count(*m) == 1 && !is_renderer_model(*m) && !is_oriented(*m)) out.push_back(m);
+    return out;
+  }
+  if (spec == "anisotropic") {
+    for (const Model* m : all_models())
+      if (is_oriented(*m) || m->name() == "ward-aniso") out.push_back(m);
     return out;
   }
   if (spec == "renderer") {
@@ -47,7 +54,7 @@ std::vector<const Model*> parse_model_set(const std::string& spec) {
     const Model* m = &model_by_name(name);  // InputError listing the known names
     if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
   }
-  if (out.empty()) throw SettingError("models", "no model named (give names, 'all' or 'single-lobe')");
+  if (out.empty()) throw SettingError("models", "no model named (give names, 'all', 'single-lobe', 'renderer' or 'anisotropic')");
   return out;
 }
 

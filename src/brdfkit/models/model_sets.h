@@ -21,8 +21,13 @@ int lobe_count(const Model& model);
 // in "single-lobe", whose members share brdfkit's kd + lobe parameterization.
 bool is_renderer_model(const Model& model);
 
-// "all" (every catalogue model), "single-lobe" (lobe_count == 1, renderer models excluded),
-// "renderer" (is_renderer_model) or a comma-separated list of
+// Whether the model turns its lobe by a fitted tangent angle (a parameter phi_t): on isotropic data
+// the angle is undetermined, so these form the set "anisotropic" (with ward-aniso, whose tangent is
+// the frame's) and are not in "single-lobe".
+bool is_oriented(const Model& model);
+
+// "all" (every catalogue model), "single-lobe" (lobe_count == 1, renderer and oriented models
+// excluded), "renderer" (is_renderer_model), "anisotropic" (is_oriented, and ward-aniso) or a comma-separated list of
 // model names; registry order for the sets, the given order for a list (duplicates dropped).
 // InputError for an unknown name or an empty list.
 std::vector<const Model*> parse_model_set(const std::string& spec);

@@ -6,6 +6,7 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/registry.h"
+#include "brdfkit/models/cook_torrance_anisotropic.h"
 #include "brdfkit/models/cook_torrance_models.h"
 #include "brdfkit/models/ashikhmin_shirley.h"
 #include "brdfkit/models/blinn_phong_lobe.h"
@@ -19,6 +20,8 @@
 #include "brdfkit/models/published_fits.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
+#include "brdfkit/ndf/beckmann_anisotropic.h"
+#include "brdfkit/ndf/ggx_anisotropic.h"
 #include "brdfkit/models/disney_principled.h"
 #include "brdfkit/models/gltf_metallic_roughness.h"
 #include "brdfkit/models/mitsuba_principled.h"
@@ -43,6 +46,8 @@ const Registry<const Model*>& model_registry() {
     auto add = [&](const Model* m) { r.add(std::string(m->name()), m); };
     add(instance<Lambert>());
     for (const Model* m : cook_torrance_models()) add(m);
+    add(instance<CookTorranceAnisotropic<BeckmannAnisotropic>>());
+    add(instance<CookTorranceAnisotropic<GgxAnisotropic>>());
     for (const Model* m : {instance<Ward>(), instance<WardAniso>(), instance<WardDuer>(), instance<BlinnPhongLobe>(),
                            instance<Lafortune>(), instance<Lafortune2>(), instance<AshikhminShirley>(),
                            instance<AshikhminShirleyDielectric>(), instance<AshikhminShirleyNgan>(),

@@ -19,7 +19,8 @@ const std::set<std::string>& covered() {
       "ashikhmin-shirley-dielectric", "ashikhmin-shirley-ngan2005",
       "cook-torrance", "cook-torrance-beckmann", "cook-torrance-blinn-phong",    // test_cook_torrance_reference.cpp
       "cook-torrance-gaussian", "cook-torrance-ggx", "cook-torrance-gtr", "cook-torrance-exponential",
-      "cook-torrance-sgd", "cook-torrance-exponential-power", "cook-torrance-schlick-rational",
+      "cook-torrance-sgd", "cook-torrance-exponential-power", "cook-torrance-beckmann-aniso",
+      "cook-torrance-ggx-aniso", "cook-torrance-schlick-rational",
       "cook-torrance-sawicki-rational", "cook-torrance-low2012", "cook-torrance-sgd-bagher2012",
       "he",                                                                       // test_he_reference.cpp
       "low-smooth", "low-smooth-2", "low-microfacet", "holzschuch-pacanowski",   // test_low_hp_reference.cpp

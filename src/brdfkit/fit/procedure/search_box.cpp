@@ -30,14 +30,16 @@ ParamTable with_search_bounds(const Model& inner, const SearchBounds& bounds) {
 
 void check_search_bounds(std::span<const Model* const> models, const SearchBounds& bounds) {
   for (const auto& [name, box] : bounds) {
-    const bool known = std::any_of(models.begin(), models.end(), [&](const Model* m) { return find_param(m->params(), name) >= 0; });
+    const bool known =
+        std::any_of(models.begin(), models.end(), [&](const Model* m) { return find_param(m->params(), name) >= 0; });
     if (!known) {
       std::string names;
       for (const ParamSpec& s : models.empty() ? ParamTable{} : models.front()->params())
         names += (names.empty() ? "" : ", ") + s.name;
-      throw SettingError("bounds", models.size() == 1
-                                       ? fmt::format("{} has no parameter '{}' (it has {})", models.front()->name(), name, names)
-                                       : fmt::format("no model of the batch has a parameter '{}'", name));
+      throw SettingError("bounds",
+                         models.size() == 1
+                             ? fmt::format("{} has no parameter '{}' (it has {})", models.front()->name(), name, names)
+                             : fmt::format("no model of the batch has a parameter '{}'", name));
     }
   }
   for (const Model* m : models) with_search_bounds(*m, bounds);

@@ -22,7 +22,9 @@ void check_search_bounds(std::span<const Model* const> models, const SearchBound
 class SearchBox final : public Model, public PairedEvaluation {
  public:
   SearchBox(const Model& inner, const SearchBounds& bounds)
-      : inner_(inner), paired_(dynamic_cast<const PairedEvaluation*>(&inner)), table_(with_search_bounds(inner, bounds)) {}
+      : inner_(inner),
+        paired_(dynamic_cast<const PairedEvaluation*>(&inner)),
+        table_(with_search_bounds(inner, bounds)) {}
   std::string_view name() const override { return inner_.name(); }
   std::string_view description() const override { return inner_.description(); }
   const ParamTable& params() const override { return table_; }
