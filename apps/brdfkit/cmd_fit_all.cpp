@@ -75,8 +75,8 @@ const CommandRegistration reg("fit-all", [](CLI::App& app) {
       ->required();
   sub->add_option("--models", a->models,
                   "Comma-separated model names, 'all' (the catalogue) or 'single-lobe' (models with exactly one "
-                  "specular lobe: one per-channel linear lobe scale besides kd, see models/model_sets.h) or 'renderer' "
-                  "(the renderers' own BSDFs)")
+                  "specular lobe: one per-channel linear lobe scale besides kd, see models/model_sets.h), 'renderer' "
+                  "(the renderers' own BSDFs) or 'anisotropic' (lobes turned by a fitted tangent angle, and ward-aniso)")
       ->capture_default_str();
   add_fit_settings(*sub, a->settings.fit);
   sub->add_option("--report", a->report,

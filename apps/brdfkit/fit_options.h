@@ -39,8 +39,8 @@ inline void add_fit_settings(CLI::App& sub, fit::FitSettings& s) {
                     "formula's domain, see `brdfkit models`; LOWER = UPPER holds it there)")
       ->take_all()
       ->type_name("NAME=LO:HI")
-      ->check(
-          [](const std::string& v) {
+      ->check(CLI::Validator(
+          [](std::string& v) {
             try {
               fit::parse_search_bound(v);
               return std::string();
@@ -48,7 +48,7 @@ inline void add_fit_settings(CLI::App& sub, fit::FitSettings& s) {
               return e.detail();
             }
           },
-          "NAME=LOWER:UPPER")
+          ""))
       ->each([&s](const std::string& v) {
         const auto [name, box] = fit::parse_search_bound(v);
         s.bounds.insert_or_assign(name, box);

@@ -22,8 +22,8 @@
 #include "brdfkit/fit/metric/metric.h"
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"
-#include "brdfkit/measured/load.h"
 #include "brdfkit/fit/procedure/search_box.h"
+#include "brdfkit/measured/load.h"
 #include "brdfkit/models/published_fits.h"
 
 namespace brdfkit::fit {

@@ -28,7 +28,8 @@ void FitSettings::validate() const {
   check_range("coarsen", coarsen, 1, kMaxCoarsen);
   for (const auto& [name, box] : bounds)
     if (!std::isfinite(box.first) || !std::isfinite(box.second) || box.first > box.second)
-      throw SettingError("bounds", fmt::format("{}: needs finite lower <= upper (got [{}, {}])", name, box.first, box.second));
+      throw SettingError("bounds",
+                         fmt::format("{}: needs finite lower <= upper (got [{}, {}])", name, box.first, box.second));
   if (!(threshold > 0) || !std::isfinite(threshold))
     throw SettingError("threshold", fmt::format("must be a finite number > 0 (got {})", threshold));
 }
@@ -51,10 +52,7 @@ std::pair<std::string, std::pair<double, double>> parse_search_bound(const std::
   };
   if (eq == 0 || eq == std::string::npos || colon == std::string::npos)
     throw SettingError("bounds", "'" + text + "' is not NAME=LOWER:UPPER (e.g. alpha=0.001:3)");
-  const std::pair<double, double> box{number(eq + 1, colon), number(colon + 1, text.size())};
-  if (!std::isfinite(box.first) || !std::isfinite(box.second) || box.first > box.second)
-    throw SettingError("bounds", "'" + text + "' needs finite LOWER <= UPPER");
-  return {text.substr(0, eq), box};
+  return {text.substr(0, eq), {number(eq + 1, colon), number(colon + 1, text.size())}};
 }
 
 }  // namespace brdfkit::fit

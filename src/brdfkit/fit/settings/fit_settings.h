@@ -50,7 +50,7 @@ struct FitSettings {
 };
 
 // One bound as the command line writes it, "NAME=LOWER:UPPER" (`--bounds alpha=0.001:3`);
-// SettingError ("bounds") naming what is wrong otherwise.
+// SettingError ("bounds") when it is not of that form. validate() checks the numbers.
 std::pair<std::string, std::pair<double, double>> parse_search_bound(const std::string& text);
 
 }  // namespace brdfkit::fit
