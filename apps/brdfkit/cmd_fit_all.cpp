@@ -17,6 +17,7 @@
 #include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/batch/fit_batch.h"
 #include "brdfkit/fit/metric/metric_report.h"
+#include "brdfkit/fit/procedure/search_box.h"
 #include "brdfkit/models/model_sets.h"
 #include "command.h"
 #include "fit_options.h"
@@ -56,6 +57,7 @@ int run_fit_all(FitAllArgs& a) {
   const std::vector<const Model*> models = parse_model_set(a.models);
   a.settings.report = a.report == "all" ? fit::metric_ids() : fit::parse_metric_list(a.report);
   a.settings.validate();
+  fit::check_search_bounds(models, a.settings.fit.bounds);
   const auto inputs = fit::list_batch_inputs(a.inputs);
   std::cerr << fmt::format("fit-all: {} material(s) x {} model(s) = {} fits, {} at once, into {}\n", inputs.size(),
                            models.size(), inputs.size() * models.size(), a.settings.jobs, a.output);
