@@ -3,12 +3,16 @@
 // values anywhere) and MERL-format tables tabulated from known parameters.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "brdfkit/fit/settings/fit_settings.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/measured/merl_tabulate.h"
+#include "brdfkit/measured/sample_set.h"
 #include "brdfkit/models/model.h"
 
 namespace brdfkit::test {
@@ -75,6 +79,21 @@ inline merl::Table tabulate_model(const Model& m, const ParamValues& v, double m
 }
 
 // Settings naming a procedure (fit/procedure/procedure.h).
+// Directional albedo at θi = 10°, 20° … 80° of scattered samples laid out on those incidence
+// rings: Σ ρ cosθo w over each ring's samples (weights of one ring summing to 2π, or to 2π in all
+// over several azimuths of one θi, whose average albedo this then is).
+inline std::vector<std::pair<double, Rgb>> ten_degree_ring_albedos(const SampleSet& s) {
+  std::vector<std::pair<double, Rgb>> out;
+  for (int i = 1; i <= 8; ++i) {
+    const double theta = i * 10 * kPi / 180;
+    Rgb a = Rgb::Zero();
+    for (size_t k = 0; k < s.size(); ++k)
+      if (std::abs(std::acos(s.wi_z[k]) - theta) < 1e-9) a += s.value(k) * s.wo_z[k] * s.weight[k];
+    out.emplace_back(theta, a);
+  }
+  return out;
+}
+
 inline fit::FitSettings with_procedure(fit::FitSettings s, const std::string& id) {
   s.procedure = id;
   return s;

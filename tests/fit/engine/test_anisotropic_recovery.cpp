@@ -44,15 +44,7 @@ class AnisotropicSamples final : public MeasuredBrdf {
   SampleSet samples() const override { return samples_; }
   // The albedo at each θi, averaged over its three azimuths (their weights hold the 1/3).
   std::vector<std::pair<double, Rgb>> albedos_from_samples() const override {
-    std::vector<std::pair<double, Rgb>> out;
-    for (int i = 1; i <= 8; ++i) {
-      Rgb a = Rgb::Zero();
-      for (size_t k = 0; k < samples_.size(); ++k)
-        if (std::abs(std::acos(samples_.wi_z[k]) - i * 10 * kDeg) < 1e-9)
-          a += samples_.value(k) * samples_.wo_z[k] * samples_.weight[k];
-      out.emplace_back(i * 10 * kDeg, a);
-    }
-    return out;
+    return test::ten_degree_ring_albedos(samples_);
   }
 
  private:

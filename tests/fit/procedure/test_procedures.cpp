@@ -6,6 +6,7 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/procedure/per_channel_shape.h"
+#include "brdfkit/fit/procedure/retabled_model.h"
 #include "brdfkit/fit/procedure/procedure.h"
 #include "support/fit_test_util.h"
 
@@ -86,7 +87,7 @@ TEST(Procedures, NganAndLowAreFitModelUnderTheirMetric) {
   EXPECT_EQ(r.fit.metric_value, fit_model(m, make_metric("bagher", data, {4}), {}).metric_value);
 }
 
-// One lobe shape per channel (seed 000 §5.1) through the PerChannelShape wrapper: a material
+// One lobe shape per channel (seed 000 §5.1) through per_channel_shape_table: a material
 // whose channels have different roughness is recovered channel by channel; the shared shape
 // cannot do that and ends between them with a larger error.
 TEST(Procedures, PerChannelShapeRecoversADifferentShapePerChannel) {
@@ -97,7 +98,7 @@ TEST(Procedures, PerChannelShapeRecoversADifferentShapePerChannel) {
   for (int c = 0; c < 3; ++c) want.values[size_t(c)][size_t(ia)] = alpha[c];
   const test::AnalyticMeasured data(m, want);
 
-  const PerChannelShape wrapped(m);
+  const RetabledModel wrapped(m, per_channel_shape_table(m));
   EXPECT_EQ(wrapped.name(), m.name());
   ASSERT_EQ(wrapped.params().size(), m.params().size());
   for (const ParamSpec& s : wrapped.params()) EXPECT_EQ(s.scope, Scope::PerChannel) << s.name;

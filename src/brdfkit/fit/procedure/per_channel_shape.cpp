@@ -2,8 +2,10 @@
 
 namespace brdfkit::fit {
 
-PerChannelShape::PerChannelShape(const Model& inner) : inner_(inner), table_(inner.params()) {
-  for (ParamSpec& s : table_) s.scope = Scope::PerChannel;
+ParamTable per_channel_shape_table(const Model& model) {
+  ParamTable table = model.params();
+  for (ParamSpec& s : table) s.scope = Scope::PerChannel;
+  return table;
 }
 
 }  // namespace brdfkit::fit

@@ -5,6 +5,7 @@
 #include "brdfkit/core/error.h"
 #include "brdfkit/fit/procedure/per_channel_shape.h"
 #include "brdfkit/fit/procedure/procedure_steps.h"
+#include "brdfkit/fit/procedure/retabled_model.h"
 #include "brdfkit/fit/procedure/search_box.h"
 
 namespace brdfkit::fit {
@@ -61,7 +62,7 @@ FitResult plain_fit(const Model& model, MetricStore& store, std::string_view met
   FitSettings s = settings;
   s.starts = starts;
   if (!settings.per_channel_shape) return fit_model(model, *metric, s);
-  const PerChannelShape wrapped(model);
+  const RetabledModel wrapped(model, per_channel_shape_table(model));
   return fit_model(wrapped, *metric, s);
 }
 
@@ -75,7 +76,7 @@ ProcedureResult run_procedure(const Model& model, MetricStore& store, const FitS
   validate(settings);
   if (!settings.bounds.empty()) {
     // Every procedure and the solver read the box from the model's table.
-    const SearchBox boxed(model, settings.bounds);
+    const RetabledModel boxed(model, with_search_bounds(model, settings.bounds));
     FitSettings s = settings;
     s.bounds.clear();
     return run_procedure(boxed, store, s, progress);
