@@ -24,6 +24,7 @@
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/engine/fit_model.h"
 #include "brdfkit/measured/load.h"
+#include "brdfkit/render/hemisphere_plot.h"
 #include "command.h"
 
 namespace brdfkit::cli {
@@ -32,7 +33,7 @@ namespace {
 using nlohmann::json;
 
 struct AnalyzeArgs {
-  std::string file, what, model, params, output, space = "linear", families, metric = "ngan", compare, report;
+  std::string file, what, model, params, output, space = "linear", families, metric = "ngan", compare, report, plot;
   bool json = false, csv = false;
   int coarsen = 1, iterations = 5, nodes = 0, starts = 1;
   double threshold = 1e-2, max_theta_h = 80;
@@ -310,6 +311,17 @@ Output ndf(const AnalyzeArgs& a, const MeasuredBrdf& data) {
   doc["metrics"] = mj;
   o.text += "metrics\n" + fit::format_metrics(metrics);
   compare_catalogue_fits(a, data, o, doc);
+  if (!a.plot.empty()) {
+    // The distribution over the hemisphere of half vectors, as seed 002 Figs. 11-13 show theirs.
+    const auto& d = model.distribution();
+    constexpr double kDecades = 4;
+    const render::Image map = render::parabolic_map([&d](const Vec3d& h) { return d.D(h.z()); }, 512);
+    render::write_png(a.plot, render::log_false_color(map, kDecades),
+                      {{"plot", "D(h), parabolic map of the hemisphere of half vectors (x right, y up)"},
+                       {"scale", fmt::format("log10 D/max over {} decades, cube-helix", kDecades)}});
+    o.text += fmt::format("plot       {} (D over the hemisphere, parabolic map, log scale, {} decades)\n", a.plot,
+                          kDecades);
+  }
   o.csv = "theta_deg,D\n";
   for (size_t j = 0; j < model.distribution().theta.size(); ++j)
     o.csv += fmt::format("{},{}\n", deg(model.distribution().theta[j]), model.distribution().value[j]);
@@ -324,6 +336,7 @@ int run_analyze(const AnalyzeArgs& a) {
   // The fits and metric grids made here take the fit settings' ranges (fit/settings/fit_settings.h).
   fit::FitSettings{.coarsen = a.coarsen, .starts = a.starts}.validate();
   if (a.nodes < 0) throw InputError("--nodes", "must be >= 0");
+  if (!a.plot.empty() && a.what != "ndf") throw InputError("--plot", "draws a distribution: only with --what ndf");
   const auto data = load_measured(a.file);
   Output o;
   if (a.what == "backscatter") o = backscatter(a, *data);
@@ -371,6 +384,7 @@ const CommandRegistration reg("analyze", [](CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--iterations", a->iterations, "ndf: masking iterations (seed 002: <= 5)")->capture_default_str();
   sub->add_option("--f0", a->f0, "ndf: Schlick F0 given (default: fitted)");
+  sub->add_option("--plot", a->plot, "ndf: draw D over the hemisphere of half vectors as a PNG (parabolic map, log scale)");
   sub->add_option("--nodes", a->nodes, "Grid size (backscatter/fresnel angles, ndf table nodes, diffraction cells)");
   sub->add_option("--threshold", a->threshold, "diffraction: |det| threshold (seed 004: 1e-2)")->capture_default_str();
   sub->add_option("--space", a->space, "backscatter: fit space, linear (seed 000 Eq. 12) or log")->capture_default_str();

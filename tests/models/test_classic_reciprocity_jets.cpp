@@ -12,6 +12,7 @@
 #include "brdfkit/models/cook_torrance_anisotropic.h"
 #include "brdfkit/models/lafortune.h"
 #include "brdfkit/models/low_smooth.h"
+#include "brdfkit/models/poulin_fournier.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
 #include "brdfkit/ndf/beckmann_anisotropic.h"
@@ -98,7 +99,7 @@ template <class M> void check_jets(const ModelCase& mc) {
 
 using Types = std::tuple<Ward, WardAniso, WardDuer, BlinnPhongLobe, Lafortune, Lafortune2, AshikhminShirley,
                          AshikhminShirleyDielectric, LowSmooth, LowSmooth2, CookTorranceAnisotropic<GgxAnisotropic>,
-                         CookTorranceAnisotropic<BeckmannAnisotropic>>;
+                         CookTorranceAnisotropic<BeckmannAnisotropic>, PoulinFournier>;
 
 template <size_t I = 0> void dispatch_jets(const ModelCase& mc, int& found) {
   if constexpr (I < std::tuple_size_v<Types>) {

@@ -41,7 +41,8 @@ TEST(ModelSets, LobeCountsAndSetsComeFromTheParameterTables) {
   // Lobes turned by a fitted tangent angle: their own set, not in single-lobe.
   std::vector<std::string> aniso;
   for (const Model* m : parse_model_set("anisotropic")) aniso.emplace_back(m->name());
-  EXPECT_EQ(aniso, (std::vector<std::string>{"cook-torrance-beckmann-aniso", "cook-torrance-ggx-aniso", "ward-aniso"}));
+  EXPECT_EQ(aniso, (std::vector<std::string>{"cook-torrance-beckmann-aniso", "cook-torrance-ggx-aniso", "poulin-fournier",
+                                             "ward-aniso"}));
   const auto list = parse_model_set("ward,lambert,ward");
   ASSERT_EQ(list.size(), 2u);
   EXPECT_EQ(list[0]->name(), "ward");

@@ -70,6 +70,7 @@ inline const std::vector<PowerCase>& power_cases() {
       {"ward-aniso", {{"alpha_x", 1}, {"alpha_y", 1}}},
       {"cook-torrance-beckmann-aniso", {{"alpha_x", 1}, {"alpha_y", 1}}, {{"alpha_y", 0.4}, {"phi_t", 0.6}}},
       {"cook-torrance-ggx-aniso", {{"alpha_x", 1}, {"alpha_y", 1}}, {{"alpha_y", 0.4}, {"phi_t", 0.6}}},
+      {"poulin-fournier", {{"n", -0.5}}},
       {"ward-duer", {{"alpha", 1}}},
       {"blinn-phong", {{"N", -0.5}}},
       {"lafortune", {{"N", -0.5}}},

@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "brdfkit/analysis/hemisphere_table.h"
 #include "brdfkit/analysis/tabulated_cook_torrance.h"
 #include "brdfkit/fit/metric/metric.h"
 
@@ -21,6 +22,8 @@ namespace brdfkit::analysis {
 
 struct NdfEstimationOptions {
   int nodes = 90;             // table angles θ_j = (j/(n−1))² π/2: dense near θ = 0, as MERL's θh axis
+  int rings = 40;             // the hemisphere table's θ nodes, counting the pole (anisotropic estimate)
+  int azimuths = 64;          // the hemisphere table's φ nodes (anisotropic estimate)
   int max_iterations = 5;     // masking recomputations (seed 002 §5.1: ≤ 5)
   std::optional<double> f0;   // Schlick F0 given; nullopt: fitted (Brent on the least-squares residual)
   double smoothing = 1e-6;    // weight of the second-difference penalty on D, relative to the data term
@@ -37,10 +40,24 @@ struct NdfEstimate {
   TabulatedCookTorrance model() const { return TabulatedCookTorrance(theta, d); }
 };
 
+// D over the hemisphere of half vectors (θ, φ) for anisotropic data: the same iteration with the
+// table of hemisphere_table.h, its masking G1(ω) from the projected area σ(ω) of the current D.
+struct AnisotropicNdfEstimate {
+  HemisphereTable table;
+  std::vector<double> d;                // normalized D at the table's nodes
+  ParamValues values;                   // kd, ks, F0 per channel
+  int iterations = 0;
+  double f0 = 0;
+  std::vector<double> residual_history; // as NdfEstimate's
+  double D(const Vec3d& h) const { return table.eval(d, h); }
+};
+
 // Throws InputError when the metric has no samples or the estimate degenerates (no specular signal).
 NdfEstimate estimate_tabulated_ndf(const fit::Metric& metric, const NdfEstimationOptions& opt = {});
 // The same least squares on the data's own samples (MERL cells, RGL nodes: exact measured values,
 // no look-up) with ngan's weighting w·cos²θi; residual_history is then √(Σ w (ρ − m)² cos²θi / Σ w).
 NdfEstimate estimate_tabulated_ndf(const SampleSet& samples, const NdfEstimationOptions& opt = {});
+// The hemisphere table from the data's own samples, weighted as the overload above.
+AnisotropicNdfEstimate estimate_anisotropic_ndf(const SampleSet& samples, const NdfEstimationOptions& opt = {});
 
 }  // namespace brdfkit::analysis

@@ -13,9 +13,16 @@
 #include <fmt/format.h>
 
 #include "brdfkit/core/error.h"
+#include "brdfkit/measured/rgl_coordinates.h"
 #include "brdfkit/measured/spectral_rgb.h"
 
 namespace brdfkit {
+
+using rgl::elevation;
+using rgl::phi2u;
+using rgl::theta2u;
+using rgl::u2phi;
+using rgl::u2theta;
 
 namespace {
 
@@ -202,17 +209,6 @@ void check_tables(const std::string& path, const std::vector<std::uint8_t>& byte
   check_grids(path, bytes, fields);
   check_microfacet_tables(path, bytes, fields);
   for (const char* name : {"luminance", "rgb", "spectra"}) check_table(path, bytes, fields, name, [](const TableView&) {});
-}
-
-// Mitsuba 3 `measured` / Dupuy & Jakob 2018 §5: θ ↦ u = sqrt(2θ/π) (finer near the normal), φ ↦ (φ+π)/2π.
-double theta2u(double theta) { return std::sqrt(theta * (2 / kPi)); }
-double phi2u(double phi) { return (phi + kPi) * (0.5 / kPi); }
-double u2theta(double u) { return u * u * (kPi / 2); }
-double u2phi(double u) { return (2 * u - 1) * kPi; }
-// Polar angle, accurate near the normal (acos(z) loses half the digits there).
-double elevation(const Vec3d& d) {
-  const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + (d.z() - 1) * (d.z() - 1));
-  return 2 * std::asin(std::min(1.0, 0.5 * dist));
 }
 
 // The header and field table of a tensor_file (Dupuy & Jakob 2018's format, Mitsuba 3
@@ -457,6 +453,14 @@ Rgb RglBrdf::rgb_node(size_t t, int y, int x) const {
   return Rgb(rgb_raw_[0][i], rgb_raw_[1][i], rgb_raw_[2][i]);
 }
 
+double RglBrdf::ndf(const Vec3d& m) const {
+  return ndf_.eval(Vec2d(theta2u(elevation(m)), phi2u(std::atan2(m.y(), m.x()))));
+}
+
+double RglBrdf::sigma(const Vec3d& w) const {
+  return sigma_.eval(Vec2d(theta2u(elevation(w)), phi2u(std::atan2(w.y(), w.x()))));
+}
+
 double RglBrdf::luminance_node(size_t t, int y, int x) const {
   return luminance_raw_[t * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x)];
 }
@@ -489,7 +493,7 @@ SampleSet RglBrdf::samples() const {
       const double theta_m = u2theta(u_m.x());
       const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()));
       const Vec3d wx = reflect(wc, m).normalized();
-      const double jac = 2 * kPi * kPi * u_m.x() * std::sin(theta_m) * 4 * wc.dot(m);
+      const double jac = rgl::half_vector_jacobian(u_m.x()) * 4 * wc.dot(m);
       return std::tuple{u_m, wx, pdf > 0 && wx.z() > 0 ? jac / pdf : 0.0};
     };
     for (int y = 0; y < grid_; ++y)
@@ -531,7 +535,7 @@ Rgb RglBrdf::albedo(const Vec3d& wi, int n) const {
       const auto rho = eval(wi, wo);
       if (!rho) continue;
       // |dωo/du_m| as in samples(); dividing by the warp's pdf makes this a quadrature in u.
-      const double jac = 2 * kPi * kPi * u_m.x() * std::sin(theta_m) * 4 * wi.dot(m);
+      const double jac = rgl::half_vector_jacobian(u_m.x()) * 4 * wi.dot(m);
       sum += *rho * wo.z() * jac / pdf;
     }
   return sum / (double(n) * n);

@@ -63,6 +63,10 @@ class RglBrdf final : public MeasuredBrdf {
   // the file's `luminance` table).
   Rgb rgb_node(size_t t, int y, int x) const;
   double luminance_node(size_t t, int y, int x) const;
+  // The file's microfacet tables through the reader's interpolants: D(m) and the projected area
+  // σ(ω) = ∫ D(m) max(0, ω·m) dωm that divides every value.
+  double ndf(const Vec3d& m) const;
+  double sigma(const Vec3d& w) const;
   // The direction pair of a node (nullopt where wo is below the horizon), as samples() uses.
   std::optional<std::pair<Vec3d, Vec3d>> node_directions(size_t t, int y, int x) const;
 

@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "brdfkit/core/param.h"
+#include "brdfkit/core/turned_frame.h"
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/warp.h"
 #include "brdfkit/fresnel/schlick.h"
@@ -58,25 +59,13 @@ struct CookTorranceAnisotropic {
     return t;
   }
 
-  // v in the lobe's frame: components along the tangent (cos φ, sin φ, 0) and the bitangent
-  // (−sin φ, cos φ, 0).
-  template <class T>
-  static Vec3<T> to_lobe(const Vec3<T>& v, const T& c, const T& s) {
-    return Vec3<T>(c * v.x() + s * v.y(), -s * v.x() + c * v.y(), v.z());
-  }
-  static Vec3d from_lobe(const Vec3d& v, double c, double s) {
-    return Vec3d(c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z());
-  }
-
   template <class T>
   static T eval(const T* p, int, const Vec3<T>& wi, const Vec3<T>& wo) {
-    using std::cos;
-    using std::sin;
     using std::sqrt;
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
     const Ndf<T> ndf(p + kNdf);
-    const T c = cos(p[kPhi]), s = sin(p[kPhi]);
-    const Vec3<T> i = to_lobe(wi, c, s), o = to_lobe(wo, c, s);
+    const TurnedFrame<T> lobe(p[kPhi]);
+    const Vec3<T> i = lobe.to_local(wi), o = lobe.to_local(wo);
     const Vec3<T> sum = i + o;
     const T len = sqrt(sum.dot(sum));
     const Vec3<T> h = sum / len;
@@ -95,15 +84,15 @@ struct CookTorranceAnisotropic {
   static std::optional<Vec3d> sample(const double* p, int, const Vec3d& wo, const Vec2d& u, double u_lobe) {
     if (!(wo.z() > 0)) return std::nullopt;
     if (lobes::pick(lobe_probabilities(p, wo), u_lobe) == 0) return square_to_cosine_hemisphere(u);
-    const Vec3d m = from_lobe(Ndf<double>(p + kNdf).sample(u), std::cos(p[kPhi]), std::sin(p[kPhi]));
+    const Vec3d m = TurnedFrame<double>(p[kPhi]).to_world(Ndf<double>(p + kNdf).sample(u));
     return lobes::reflect_about_half(wo, m);
   }
   static double pdf(const double* p, int, const Vec3d& wo, const Vec3d& wi) {
     if (!(wo.z() > 0 && wi.z() > 0)) return 0.0;
     const auto prob = lobe_probabilities(p, wo);
     const Ndf<double> ndf(p + kNdf);
-    const double c = std::cos(p[kPhi]), s = std::sin(p[kPhi]);
-    const double spec = lobes::half_vector_pdf(wo, wi, [&](const Vec3d& h) { return ndf.pdf(to_lobe(h, c, s)); });
+    const TurnedFrame<double> lobe(p[kPhi]);
+    const double spec = lobes::half_vector_pdf(wo, wi, [&](const Vec3d& h) { return ndf.pdf(lobe.to_local(h)); });
     return prob[0] * cosine_hemisphere_pdf(wi) + prob[1] * spec;
   }
 };

@@ -17,6 +17,7 @@
 #include "brdfkit/models/low_smooth.h"
 #include "brdfkit/models/low_microfacet.h"
 #include "brdfkit/models/holzschuch_pacanowski.h"
+#include "brdfkit/models/poulin_fournier.h"
 #include "brdfkit/models/published_fits.h"
 #include "brdfkit/models/ward.h"
 #include "brdfkit/models/ward_duer.h"
@@ -48,6 +49,7 @@ const Registry<const Model*>& model_registry() {
     for (const Model* m : cook_torrance_models()) add(m);
     add(instance<CookTorranceAnisotropic<BeckmannAnisotropic>>());
     add(instance<CookTorranceAnisotropic<GgxAnisotropic>>());
+    add(instance<PoulinFournier>());
     for (const Model* m : {instance<Ward>(), instance<WardAniso>(), instance<WardDuer>(), instance<BlinnPhongLobe>(),
                            instance<Lafortune>(), instance<Lafortune2>(), instance<AshikhminShirley>(),
                            instance<AshikhminShirleyDielectric>(), instance<AshikhminShirleyNgan>(),

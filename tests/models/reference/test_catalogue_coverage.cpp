@@ -22,6 +22,7 @@ const std::set<std::string>& covered() {
       "cook-torrance-sgd", "cook-torrance-exponential-power", "cook-torrance-beckmann-aniso",
       "cook-torrance-ggx-aniso", "cook-torrance-schlick-rational",
       "cook-torrance-sawicki-rational", "cook-torrance-low2012", "cook-torrance-sgd-bagher2012",
+      "poulin-fournier",                                                          // test_poulin_fournier_reference.cpp
       "he",                                                                       // test_he_reference.cpp
       "low-smooth", "low-smooth-2", "low-microfacet", "holzschuch-pacanowski",   // test_low_hp_reference.cpp
       "gltf-metallic-roughness", "mitsuba-roughconductor-beckmann",              // test_renderer_models_reference.cpp

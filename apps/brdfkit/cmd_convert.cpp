@@ -1,0 +1,77 @@
+// `brdfkit convert SOURCE -o OUT.binary|OUT.bsdf`: a measured file (any format brdfkit reads) or a
+// model with parameters (MODEL --param ..., --params FILE [--material NAME]) written as a MERL
+// .binary table (measured/merl_tabulate.h; cells the source has no value for become "not
+// measured") or as an isotropic RGL tensor_file (measured/rgl_writer.h: Dupuy & Jakob 2018's
+// parameterization, readable by Mitsuba 3's `measured` and pbrt-v4). Written atomically.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "brdfkit/core/error.h"
+#include "brdfkit/measured/load.h"
+#include "brdfkit/measured/merl_tabulate.h"
+#include "brdfkit/measured/rgl_writer.h"
+#include "brdfkit/models/tabulate_brdf.h"
+#include "brdf_options.h"
+#include "command.h"
+
+namespace brdfkit::cli {
+namespace {
+
+struct ConvertArgs {
+  BrdfOptions source;
+  std::string output, description;
+  RglWriteOptions rgl;
+};
+
+bool names_measured_file(const BrdfOptions& o) {
+  return o.params.empty() && o.params_file.empty() && has_measured_extension(o.model);
+}
+
+int run_convert(const ConvertArgs& a) {
+  const std::filesystem::path out(a.output);
+  const std::string ext = out.extension().string();
+  if (ext != ".binary" && ext != ".bsdf")
+    throw InputError("-o", fmt::format("'{}': the output format comes from its extension, .binary (MERL) or .bsdf (RGL)",
+                                       a.output));
+  if (a.source.model.empty()) throw InputError("SOURCE", "a measured file or a model is required");
+  std::unique_ptr<MeasuredBrdf> data;
+  std::unique_ptr<Brdf> model;
+  if (names_measured_file(a.source)) data = load_measured(a.source.model);
+  else model = std::make_unique<Brdf>(a.source.brdf());
+  const std::string what = data ? data->path() : std::string(model->model().name());
+  RglSource rho = [&](const Vec3d& wi, const Vec3d& wo) -> std::optional<Rgb> {
+    return data ? data->eval(wi, wo) : std::optional<Rgb>(model->eval(wi, wo));
+  };
+  if (ext == ".binary") {
+    if (model) {
+      merl::write(out, tabulate_brdf(*model, false).table);
+    } else {
+      // A cell without a measured value is written as −1, MERL's "not measured".
+      merl::write(out, merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return rho(wi, wo).value_or(Rgb::Constant(-1)); }));
+    }
+  } else {
+    RglWriteOptions opt = a.rgl;
+    opt.description = a.description.empty() ? fmt::format("converted by brdfkit from {}", what) : a.description;
+    write_rgl(out, rho, opt);
+  }
+  std::cout << fmt::format("wrote {}: {} as {}\n", a.output, what, ext == ".binary" ? "MERL" : "RGL tensor_file");
+  return 0;
+}
+
+const CommandRegistration reg("convert", [](CLI::App& app) {
+  auto* sub = app.add_subcommand("convert",
+                                 "Write a measured file or a model (MODEL --param ..., or --params FILE) as MERL "
+                                 ".binary or RGL .bsdf (the format from -o's extension)");
+  auto a = std::make_shared<ConvertArgs>();
+  add_brdf_options(sub, a->source);
+  sub->add_option("-o,--output", a->output, "Output file: .binary (MERL) or .bsdf (RGL), written atomically")->required();
+  sub->add_option("--description", a->description, "RGL: the file's description text");
+  sub->add_option("--theta-i", a->rgl.theta_i, "RGL: incidence nodes from 0 to 90 degrees")->capture_default_str();
+  sub->add_option("--grid", a->rgl.grid, "RGL: colour grid per incidence node (N x N)")->capture_default_str();
+  return [a]() { return run_convert(*a); };
+});
+
+}  // namespace
+}  // namespace brdfkit::cli
