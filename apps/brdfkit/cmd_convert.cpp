@@ -10,8 +10,8 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/measured/load.h"
-#include "brdfkit/measured/merl_tabulate.h"
-#include "brdfkit/measured/rgl_writer.h"
+#include "brdfkit/measured/merl.h"
+#include "brdfkit/measured/write_measured.h"
 #include "brdfkit/models/tabulate_brdf.h"
 #include "brdf_options.h"
 #include "command.h"
@@ -41,20 +41,14 @@ int run_convert(const ConvertArgs& a) {
   if (names_measured_file(a.source)) data = load_measured(a.source.model);
   else model = std::make_unique<Brdf>(a.source.brdf());
   const std::string what = data ? data->path() : std::string(model->model().name());
-  RglSource rho = [&](const Vec3d& wi, const Vec3d& wo) -> std::optional<Rgb> {
-    return data ? data->eval(wi, wo) : std::optional<Rgb>(model->eval(wi, wo));
-  };
-  if (ext == ".binary") {
-    if (model) {
-      merl::write(out, tabulate_brdf(*model, false).table);
-    } else {
-      // A cell without a measured value is written as −1, MERL's "not measured".
-      merl::write(out, merl::tabulate([&](const Vec3d& wi, const Vec3d& wo) { return rho(wi, wo).value_or(Rgb::Constant(-1)); }));
-    }
+  RglWriteOptions opt = a.rgl;
+  opt.description = a.description.empty() ? fmt::format("converted by brdfkit from {}", what) : a.description;
+  if (model && ext == ".binary") {
+    merl::write(out, tabulate_brdf(*model, false).table);  // refuses negative values, as `tabulate` does
   } else {
-    RglWriteOptions opt = a.rgl;
-    opt.description = a.description.empty() ? fmt::format("converted by brdfkit from {}", what) : a.description;
-    write_rgl(out, rho, opt);
+    write_measured(out, [&](const Vec3d& wi, const Vec3d& wo) {
+      return data ? data->eval(wi, wo) : std::optional<Rgb>(model->eval(wi, wo));
+    }, opt);
   }
   std::cout << fmt::format("wrote {}: {} as {}\n", a.output, what, ext == ".binary" ? "MERL" : "RGL tensor_file");
   return 0;

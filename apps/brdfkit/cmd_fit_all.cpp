@@ -19,6 +19,7 @@
 #include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/procedure/search_box.h"
 #include "brdfkit/models/model_sets.h"
+#include "brdfkit/models/published_fits.h"
 #include "command.h"
 #include "fit_options.h"
 
@@ -58,6 +59,10 @@ int run_fit_all(FitAllArgs& a) {
   a.settings.report = a.report == "all" ? fit::metric_ids() : fit::parse_metric_list(a.report);
   a.settings.validate();
   fit::check_search_bounds(models, a.settings.fit.bounds);
+  if (!a.settings.compare.empty()) {  // refused before the batch is announced, as every other bad option
+    const PublishedFits published = PublishedFits::read(a.settings.compare);
+    if (!published.supported()) throw InputError(a.settings.compare, published.unsupported_reason());
+  }
   const auto inputs = fit::list_batch_inputs(a.inputs);
   std::cerr << fmt::format("fit-all: {} material(s) x {} model(s) = {} fits, {} at once, into {}\n", inputs.size(),
                            models.size(), inputs.size() * models.size(), a.settings.jobs, a.output);

@@ -40,8 +40,8 @@ from ._brdfkit import (  # noqa: F401  (the public classes and functions documen
 __version__ = _brdfkit.__version__
 __all__ = [
     "Brdf", "Fit", "FitError", "FitSettings", "InputError", "MerlTable", "Measured", "Model", "OutputError",
-    "SettingError", "error", "export", "fit", "load", "load_fit", "model", "models", "published", "render",
-    "tabulate", "batch",
+    "SettingError", "convert", "error", "export", "fit", "load", "load_fit", "model", "models", "published",
+    "render", "tabulate", "batch",
 ]
 
 
@@ -120,6 +120,24 @@ def tabulate(brdf, *, clamp_negative=False) -> MerlTable:
     (clamp_negative=True stores max(0, rho) for negative values instead).
     """
     return _tabulate(_brdf_of(brdf), clamp_negative)
+
+
+def convert(source, output, *, theta_i=16, grid=64, description="") -> None:
+    """Writes measured data, a Brdf or a Fit as `brdfkit convert` does: MERL .binary or RGL .bsdf by the extension.
+
+    source: a Measured (or a path to one), a Brdf or a Fit. RGL output (Dupuy & Jakob 2018's
+    parameterization, readable by Mitsuba 3's `measured`): theta_i incidence nodes from 0 to 90 deg,
+    a grid x grid colour table per node, the file's description. MERL cells the source has no value
+    for are written as not measured. ValueError for another extension or bad options; the file is
+    written atomically.
+    """
+    if isinstance(source, (str, _os.PathLike)):
+        source = load(source)
+    if isinstance(source, Fit):
+        source = source.brdf
+    if not isinstance(source, (Measured, Brdf)):
+        raise TypeError(f"expected a brdfkit.Measured, Brdf or Fit, or a path, got {type(source).__name__}")
+    _brdfkit._write_measured(source, _os.fspath(output), theta_i, grid, description)
 
 
 def render(subjects, output=None, *, env=None, env_rotation=0.0, env_intensity=1.0, env_constant=None,

@@ -12,6 +12,8 @@
 #include "brdfkit/measured/albedo.h"
 #include "brdfkit/measured/load.h"
 #include "brdfkit/measured/summary.h"
+#include "brdfkit/measured/write_measured.h"
+#include "brdfkit/models/model.h"
 #include "direction_arrays.h"
 #include "python_api.h"
 
@@ -92,6 +94,19 @@ albedo info()['albedo'] gives.)")
         }
         return to_python(j);
       }, "What `brdfkit info --json` says of the file: shape, valid share, value ranges, albedo a(theta_i) at 0..80 deg.");
+  // brdfkit.convert's two sources; the format comes from the output's extension (write_measured.h).
+  m.def("_write_measured",
+        [](Measured& d, const std::filesystem::path& out, int theta_i, int grid, const std::string& description) {
+          const RglWriteOptions opt{.theta_i = theta_i, .grid = grid, .description = description};
+          write_measured(out, [&d](const Vec3d& wi, const Vec3d& wo) { return d.data().eval(wi, wo); }, opt);
+        },
+        py::call_guard<py::gil_scoped_release>());
+  m.def("_write_measured",
+        [](const Brdf& b, const std::filesystem::path& out, int theta_i, int grid, const std::string& description) {
+          const RglWriteOptions opt{.theta_i = theta_i, .grid = grid, .description = description};
+          write_measured(out, [&b](const Vec3d& wi, const Vec3d& wo) { return std::optional<Rgb>(b.eval(wi, wo)); }, opt);
+        },
+        py::call_guard<py::gil_scoped_release>());
 }
 
 }  // namespace brdfkit::python

@@ -82,3 +82,20 @@ def test_dtypes_and_strides_are_converted(rng):
         d.eval(np.array([["a", "b", "c"]]), wo)
     with pytest.raises(ValueError, match="2 rows and 3 rows"):
         d.eval(wi[:2], wo[:3])
+
+
+def test_convert_writes_what_the_cli_writes(tmp_path):
+    # A measured file to RGL and MERL, and a Brdf to RGL: the files read back with the source's values.
+    d = brdfkit.load(rgl())
+    brdfkit.convert(d, tmp_path / "paper.binary")
+    merl = brdfkit.load(tmp_path / "paper.binary")
+    wi, wo = unit(30, 0), unit(40, 180)
+    np.testing.assert_allclose(merl.eval(wi, wo), d.eval(wi, wo), rtol=0.05)
+    ward = brdfkit.Brdf("ward", kd=0.3, ks=0.2, alpha=0.15)
+    brdfkit.convert(ward, tmp_path / "ward.bsdf", theta_i=10, grid=24, description="ward")
+    back = brdfkit.load(tmp_path / "ward.bsdf")
+    assert back.format == "rgl" and "10 theta_i x 24x24" in back.dimensions
+    np.testing.assert_allclose(back.eval(wi, wo), ward.eval(wi, wo), rtol=0.02)
+    with pytest.raises(ValueError, match="extension"):
+        brdfkit.convert(ward, tmp_path / "ward.txt")
+    assert not (tmp_path / "ward.txt").exists()
