@@ -152,6 +152,91 @@ void check(const RglWriteOptions& o) {
   if (!in(o.power_iterations, 0, 20)) throw InputError("rgl writer", "power iterations must be in [0, 20]");
 }
 
+// Incidence nodes uniform in cosθi, as Dupuy & Jakob's measured files roughly are: dense towards
+// the horizon, where ρ changes fastest with the incidence.
+std::vector<float> incidence_nodes(int nt) {
+  std::vector<float> theta_i(static_cast<size_t>(nt));
+  for (int t = 0; t < nt; ++t) theta_i[size_t(t)] = float(std::acos(1.0 - double(t) / (nt - 1)));
+  return theta_i;
+}
+
+// The VNDF D(m) max(0, ωi·m) |dωm/du| of each incidence node on the half vector's unit square
+// (x: u_θ, y: u_φ), nv × nv per node.
+std::vector<float> vndf_table(const UTable& ndf, const std::vector<float>& theta_i, int nv) {
+  std::vector<float> vndf(theta_i.size() * size_t(nv) * size_t(nv));
+  tbb::parallel_for(size_t(0), theta_i.size(), [&](size_t t) {
+    const Vec3d wi = spherical_direction(double(theta_i[t]), 0.0);
+    for (int y = 0; y < nv; ++y)
+      for (int x = 0; x < nv; ++x) {
+        const double ux = double(x) / (nv - 1), uy = double(y) / (nv - 1);
+        const Vec3d m = spherical_direction(u2theta(ux), u2phi(uy));
+        vndf[(t * size_t(nv) + size_t(y)) * size_t(nv) + size_t(x)] =
+            float(ndf.at(ux) * std::max(0.0, wi.dot(m)) * half_vector_jacobian(ux));
+      }
+  });
+  return vndf;
+}
+
+// The reader's interpolants of the tables, so that the colour grid reads back exactly at its nodes.
+struct Interpolants {
+  MarginalWarp2D ndf, sigma, vndf;
+};
+
+struct ColourGrid {
+  std::vector<float> rgb, luminance;  // [θi][3][y][x], [θi][y][x]
+  std::vector<std::uint8_t> valid;    // [y][x]: measured and above the horizon at every θi
+};
+
+ColourGrid colour_grid(const RglSource& rho, const Interpolants& in, const std::vector<float>& theta_i, int g) {
+  const size_t nt = theta_i.size(), cells = size_t(g) * size_t(g);
+  ColourGrid out{std::vector<float>(nt * 3 * cells), std::vector<float>(nt * cells), {}};
+  std::vector<std::uint8_t> measured(nt * cells, 1);
+  tbb::parallel_for(size_t(0), nt, [&](size_t t) {
+    const double th = theta_i[t], params[2] = {0.0, th};
+    const Vec3d wi = spherical_direction(th, 0.0), wi_eval = spherical_direction(std::min(th, kMaxEvalTheta), 0.0);
+    const double sigma_i = in.sigma.eval(Vec2d(theta2u(th), phi2u(0.0)));
+    for (int y = 0; y < g; ++y)
+      for (int x = 0; x < g; ++x) {
+        const size_t cell = size_t(y) * size_t(g) + size_t(x);
+        const Vec2d u_m = in.vndf.sample(Vec2d(double(x) / (g - 1), double(y) / (g - 1)), params).first;
+        const Vec3d wo = reflect(wi, spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()))).normalized();
+        const double d = in.ndf.eval(u_m);
+        // The table holds ρ cosθo (times 4σ/D), which vanishes linearly at the horizon. A node whose
+        // wo falls below it holds that quantity continued oddly (ρ of the mirror direction above
+        // the horizon times the negative cosθo), so that interpolating towards the horizon follows
+        // ρ cosθo → 0 and the reader's division by cosθo stays near ρ; with 0 stored there, ρ
+        // within a cell of the horizon came out up to 100 times too large.
+        const Vec3d above(wo.x(), wo.y(), std::abs(wo.z()));
+        const std::optional<Rgb> v = d > 0 ? rho(wi_eval, above) : std::nullopt;
+        if (!(wo.z() > 0) || !v) measured[t * cells + cell] = 0;
+        if (v && !v->allFinite())
+          throw InputError("rgl writer", fmt::format("non-finite value at θi = {:.2f}°, wo = ({:.4f}, {:.4f}, {:.4f})",
+                                                     th * 180 / kPi, above.x(), above.y(), above.z()));
+        const Rgb value = v ? Rgb(*v * (4 * sigma_i * wo.z() / d)) : Rgb::Zero();
+        for (size_t c = 0; c < 3; ++c) out.rgb[(t * 3 + c) * cells + cell] = float(value[Eigen::Index(c)]);
+        out.luminance[t * cells + cell] = float(std::max(0.0, luminance(value)));  // a sampling density: ≥ 0
+      }
+  });
+  out.valid.assign(cells, 1);
+  for (size_t k = 0; k < measured.size(); ++k) out.valid[k % cells] &= measured[k];
+  return out;
+}
+
+// The colour grid as spectra over `wl` (rgb_to_spectrum), [θi][λ][y][x].
+std::vector<float> spectra_of(const std::vector<float>& rgb, size_t nt, size_t cells, const std::vector<double>& wl) {
+  const Eigen::MatrixXd to_spectrum = rgb_to_spectrum(wl);
+  const size_t nl = wl.size();
+  std::vector<float> spectra(nt * nl * cells);
+  for (size_t t = 0; t < nt; ++t)
+    for (size_t cell = 0; cell < cells; ++cell) {
+      const Eigen::Vector3d c(rgb[(t * 3 + 0) * cells + cell], rgb[(t * 3 + 1) * cells + cell],
+                              rgb[(t * 3 + 2) * cells + cell]);
+      const Eigen::VectorXd s = to_spectrum * c;
+      for (size_t l = 0; l < nl; ++l) spectra[(t * nl + l) * cells + cell] = float(s[Eigen::Index(l)]);
+    }
+  return spectra;
+}
+
 }  // namespace
 
 void write_rgl(const std::filesystem::path& file, const RglSource& rho, const RglWriteOptions& opt) {
@@ -159,94 +244,30 @@ void write_rgl(const std::filesystem::path& file, const RglSource& rho, const Rg
   const HalfVectorRule rule(opt.ndf_nodes);
   const UTable ndf = power_iteration_ndf(rho, opt, rule);
   const UTable sigma = projected_areas(ndf, rule);
-
-  const int nt = opt.theta_i, nv = opt.vndf_nodes, g = opt.grid;
-  std::vector<float> theta_i(static_cast<size_t>(nt));
-  // Uniform in cosθi, as Dupuy & Jakob's measured files roughly are: dense towards the horizon,
-  // where ρ changes fastest with the incidence.
-  for (int t = 0; t < nt; ++t) theta_i[size_t(t)] = float(std::acos(1.0 - double(t) / (nt - 1)));
-  // The VNDF of each incidence node over the half vector's unit square (x: u_θ, y: u_φ).
-  std::vector<float> vndf(size_t(nt) * size_t(nv) * size_t(nv));
-  tbb::parallel_for(0, nt, [&](int t) {
-    const Vec3d wi = spherical_direction(double(theta_i[size_t(t)]), 0.0);
-    for (int y = 0; y < nv; ++y)
-      for (int x = 0; x < nv; ++x) {
-        const double ux = double(x) / (nv - 1), uy = double(y) / (nv - 1);
-        const Vec3d m = spherical_direction(u2theta(ux), u2phi(uy));
-        vndf[(size_t(t) * size_t(nv) + size_t(y)) * size_t(nv) + size_t(x)] =
-            float(ndf.at(ux) * std::max(0.0, wi.dot(m)) * half_vector_jacobian(ux));
-      }
-  });
-  // The reader's interpolants, so that the grid's values read back exactly at its nodes.
+  const std::vector<float> theta_i = incidence_nodes(opt.theta_i);
+  const std::vector<float> vndf = vndf_table(ndf, theta_i, opt.vndf_nodes);
   const std::vector<float> ndf_rows = two_rows(ndf), sigma_rows = two_rows(sigma);
-  const MarginalWarp2D ndf_w(ndf_rows.data(), opt.ndf_nodes, 2, {}, false);
-  const MarginalWarp2D sigma_w(sigma_rows.data(), opt.ndf_nodes, 2, {}, false);
-  const MarginalWarp2D vndf_w(vndf.data(), nv, nv, {{0.0f}, theta_i}, true);
-
-  const size_t cells = size_t(g) * size_t(g);
-  std::vector<float> rgb(size_t(nt) * 3 * cells), lum(size_t(nt) * cells);
-  std::vector<std::uint8_t> measured(size_t(nt) * cells, 1);  // per slice; `valid` is their conjunction
-  tbb::parallel_for(0, nt, [&](int t) {
-    const double th = theta_i[size_t(t)], params[2] = {0.0, th};
-    const Vec3d wi = spherical_direction(th, 0.0), wi_eval = spherical_direction(std::min(th, kMaxEvalTheta), 0.0);
-    const double sigma_i = sigma_w.eval(Vec2d(theta2u(th), phi2u(0.0)));
-    for (int y = 0; y < g; ++y)
-      for (int x = 0; x < g; ++x) {
-        const size_t cell = size_t(y) * size_t(g) + size_t(x);
-        const Vec2d u_m = vndf_w.sample(Vec2d(double(x) / (g - 1), double(y) / (g - 1)), params).first;
-        const Vec3d m = spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()));
-        const Vec3d wo = reflect(wi, m).normalized();
-        const double d = ndf_w.eval(u_m);
-        // The table holds ρ cosθo (times 4σ/D), which vanishes linearly at the horizon. A node whose
-        // wo falls below it holds that quantity continued oddly (ρ of the mirror direction above
-        // the horizon times the negative cosθo), so that interpolating towards the horizon follows
-        // ρ cosθo → 0 and the reader's division by cosθo stays near ρ; with 0 stored there, ρ
-        // within a cell of the horizon came out up to 100 times too large.
-        const Vec3d above(wo.x(), wo.y(), std::abs(wo.z()));
-        std::optional<Rgb> v;
-        if (d > 0) v = rho(wi_eval, above);
-        if (!(wo.z() > 0)) measured[size_t(t) * cells + cell] = 0;
-        Rgb value = Rgb::Zero();
-        if (v) {
-          if (!v->allFinite())
-            throw InputError("rgl writer", fmt::format("non-finite value at θi = {:.2f}°, wo = ({:.4f}, {:.4f}, {:.4f})",
-                                                       th * 180 / kPi, above.x(), above.y(), above.z()));
-          value = *v * (4 * sigma_i * wo.z() / d);
-        } else {
-          measured[size_t(t) * cells + cell] = 0;
-        }
-        for (int c = 0; c < 3; ++c) rgb[(size_t(t) * 3 + size_t(c)) * cells + cell] = float(value[c]);
-        lum[size_t(t) * cells + cell] = float(std::max(0.0, luminance(value)));  // a sampling density: ≥ 0
-      }
-  });
-
-  std::vector<std::uint8_t> valid(cells, 1);
-  for (size_t k = 0; k < measured.size(); ++k) valid[k % cells] &= measured[k];
+  const Interpolants in{MarginalWarp2D(ndf_rows.data(), opt.ndf_nodes, 2, {}, false),
+                        MarginalWarp2D(sigma_rows.data(), opt.ndf_nodes, 2, {}, false),
+                        MarginalWarp2D(vndf.data(), opt.vndf_nodes, opt.vndf_nodes, {{0.0f}, theta_i}, true)};
+  const ColourGrid grid = colour_grid(rho, in, theta_i, opt.grid);
   const std::vector<double> wl = spectrum_wavelengths();
-  const Eigen::MatrixXd to_spectrum = rgb_to_spectrum(wl);
-  const size_t nl = wl.size();
-  std::vector<float> spectra(size_t(nt) * nl * cells);
-  for (size_t t = 0; t < size_t(nt); ++t)
-    for (size_t cell = 0; cell < cells; ++cell) {
-      const Eigen::Vector3d c(rgb[(t * 3 + 0) * cells + cell], rgb[(t * 3 + 1) * cells + cell],
-                              rgb[(t * 3 + 2) * cells + cell]);
-      const Eigen::VectorXd s = to_spectrum * c;
-      for (size_t l = 0; l < nl; ++l) spectra[(t * nl + l) * cells + cell] = float(s[Eigen::Index(l)]);
-    }
+  const std::uint64_t nt = theta_i.size(), nv = std::uint64_t(opt.vndf_nodes), g = std::uint64_t(opt.grid),
+                      nn = std::uint64_t(opt.ndf_nodes), nl = wl.size();
 
   TensorFileWriter w;
   w.add_text("description", opt.description);
   w.add_f32("phi_i", {1}, {0.0f});
-  w.add_f32("theta_i", {std::uint64_t(nt)}, theta_i);
-  w.add_f32("sigma", {2, std::uint64_t(opt.ndf_nodes)}, sigma_rows);
-  w.add_f32("ndf", {2, std::uint64_t(opt.ndf_nodes)}, ndf_rows);
-  w.add_f32("vndf", {1, std::uint64_t(nt), std::uint64_t(nv), std::uint64_t(nv)}, vndf);
-  w.add_f32("luminance", {1, std::uint64_t(nt), std::uint64_t(g), std::uint64_t(g)}, lum);
-  if (opt.rgb_table) w.add_f32("rgb", {1, std::uint64_t(nt), 3, std::uint64_t(g), std::uint64_t(g)}, rgb);
+  w.add_f32("theta_i", {nt}, theta_i);
+  w.add_f32("sigma", {2, nn}, sigma_rows);
+  w.add_f32("ndf", {2, nn}, ndf_rows);
+  w.add_f32("vndf", {1, nt, nv, nv}, vndf);
+  w.add_f32("luminance", {1, nt, g, g}, grid.luminance);
+  if (opt.rgb_table) w.add_f32("rgb", {1, nt, 3, g, g}, grid.rgb);
   w.add_f32("wavelengths", {nl}, std::vector<float>(wl.begin(), wl.end()));
-  w.add_f32("spectra", {1, std::uint64_t(nt), nl, std::uint64_t(g), std::uint64_t(g)}, spectra);
+  w.add_f32("spectra", {1, nt, nl, g, g}, spectra_of(grid.rgb, nt, g * g, wl));
   w.add_u8("jacobian", {1}, {1});
-  w.add_u8("valid", {cells}, valid);
+  w.add_u8("valid", {g * g}, grid.valid);
   write_file_atomically(file, w.bytes());
 }
 

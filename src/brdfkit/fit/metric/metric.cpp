@@ -7,6 +7,7 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/ordered_reduce.h"
+#include "brdfkit/core/thread_scratch.h"
 #include "brdfkit/fit/metric/metric_definition.h"
 
 namespace brdfkit::fit {
@@ -91,7 +92,7 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
 
 const MetricChunk& Metric::chunk(size_t i, MetricChunk& scratch) const {
   if (!chunks_.empty()) return chunks_[i];
-  scratch = build_chunk(grid_, i, *data_);
+  build_chunk(grid_, i, *data_, scratch);
   return scratch;
 }
 
@@ -114,11 +115,16 @@ double Metric::value(const Model& model, const ParamValues& values) const {
   check_model(model);
   // Per chunk: Σ r² (the residual of residual.h, scale applied at the end), its sample count, and
   // whether the sum is finite.
+  struct Buffers {
+    MetricChunk chunk;         // an on-demand grid's chunk
+    std::vector<double> rho;
+  };
   const std::vector<double> total = ordered_reduce(chunk_count(), 3, [&](size_t i, double* acc) {
-    MetricChunk scratch;
-    const MetricChunk& ch = chunk(i, scratch);
+    ScratchLease<Buffers> buffers;
+    const MetricChunk& ch = chunk(i, buffers->chunk);
     double sum = 0;
-    std::vector<double> rho(ch.size());
+    std::vector<double>& rho = buffers->rho;
+    rho.resize(ch.size());
     const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
     for (int c = 0; c < 3; ++c) {
       model.eval_batch(values.channel(c), c, ch.size(), d, rho.data());

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "brdfkit/core/thread_scratch.h"
 
 namespace brdfkit::fit {
 
@@ -20,29 +21,19 @@ std::vector<AxisNode> regular_nodes(double lo, double hi, double step) {
   return nodes;
 }
 
-MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data) {
-  MetricChunk ch;
+void build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data, MetricChunk& ch) {
+  ch.clear();
   const AxisNode ti = grid.theta_i[i];
   const Vec3d wi(std::sin(ti.angle), 0.0, std::cos(ti.angle));
   const size_t n = grid.theta_o.size() * grid.phi.size();
-  // The nodes with a weight and both directions above the horizon, in (θo, φ) order. Per-thread
-  // buffers: hp-rmse builds 81 chunks of 0.46 M nodes per evaluation, and fresh ones cost page
-  // faults each time. Should a look-up run parallel work that re-enters here on this thread, the
-  // inner call takes buffers of its own.
+  // The nodes with a weight and both directions above the horizon, in (θo, φ) order.
   struct RowBuffers {
     std::vector<Vec3d> wo;
     std::vector<double> weight, cos_phi, sin_phi;
     std::vector<std::optional<Rgb>> m;
-    bool busy = false;
   };
-  thread_local RowBuffers per_thread;
-  RowBuffers own;
-  RowBuffers& buf = per_thread.busy ? own : per_thread;
-  struct Release {
-    bool& busy;
-    ~Release() { busy = false; }
-  } release{buf.busy};
-  buf.busy = true;
+  ScratchLease<RowBuffers> lease;
+  RowBuffers& buf = *lease;
   std::vector<Vec3d>& wo = buf.wo;
   std::vector<double> &weight = buf.weight, &cos_phi = buf.cos_phi, &sin_phi = buf.sin_phi;
   std::vector<std::optional<Rgb>>& m = buf.m;
@@ -78,6 +69,11 @@ MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data
     if (!m[k] || !m[k]->allFinite()) continue;
     ch.push(wi, wo[k], weight[k], factor, *m[k]);
   }
+}
+
+MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data) {
+  MetricChunk ch;
+  build_chunk(grid, i, data, ch);
   return ch;
 }
 

@@ -31,6 +31,11 @@ struct MetricChunk : PairArrays {
   std::vector<double> factor;       // multiplies ρ (model and measured) before the transform
   std::array<std::vector<double>, 3> measured;
   size_t size() const { return sqrt_weight.size(); }
+  // Empties every array, keeping its capacity.
+  void clear() {
+    for (auto* v : {&wi_x, &wi_y, &wi_z, &wo_x, &wo_y, &wo_z, &sqrt_weight, &factor}) v->clear();
+    for (auto& c : measured) c.clear();
+  }
   // Appends one sample of quadrature weight `weight` (its square root is kept).
   void push(const Vec3d& wi, const Vec3d& wo, double weight, double f, const Rgb& m) {
     push_pair(wi, wo);
@@ -46,7 +51,9 @@ std::vector<AxisNode> cell_centres(double lo, double hi, int n, double scale = 1
 std::vector<AxisNode> regular_nodes(double lo, double hi, double step);
 
 // Builds the chunk of θi node i: looks the measured value up at every (θo, φ) node, keeps the
-// valid ones with non-zero weight.
+// valid ones with non-zero weight. Into `out` (its arrays' capacity reused: on-demand grids such
+// as hp-rmse's rebuild 81 chunks of 0.46 M nodes per evaluation), or as a new chunk.
+void build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data, MetricChunk& out);
 MetricChunk build_chunk(const GridSpec& grid, size_t i, const MeasuredBrdf& data);
 
 }  // namespace brdfkit::fit
