@@ -58,8 +58,6 @@ int HemisphereTable::node(int j, int k) const {
 
 double HemisphereTable::phi(int k) const { return 2 * kPi * k / n_phi_; }
 
-Vec3d HemisphereTable::direction(int j, int k) const { return spherical_direction(theta(j), phi(k)); }
-
 HemisphereTable::Stencil HemisphereTable::locate(const Vec3d& h) const {
   // Elevation from the chord to the pole: accurate near the normal, where acos(z) is not.
   const double chord = std::sqrt(h.x() * h.x() + h.y() * h.y() + (h.z() - 1) * (h.z() - 1));
@@ -90,11 +88,7 @@ HemisphereTable::Stencil HemisphereTable::locate(const Vec3d& h) const {
 }
 
 double HemisphereTable::eval(const std::vector<double>& d, const Vec3d& h) const {
-  if (!(h.z() > 0)) return 0.0;
-  const Stencil s = locate(h);
-  double v = 0;
-  for (int q = 0; q < s.count; ++q) v += s.weight[size_t(q)] * d[size_t(s.node[size_t(q)])];
-  return v;
+  return h.z() > 0 ? locate(h).apply(d) : 0.0;
 }
 
 double HemisphereTable::mass(const std::vector<double>& d) const {
@@ -114,12 +108,7 @@ std::vector<std::array<int, 3>> HemisphereTable::second_differences() const {
 
 HemisphereTable::Masking HemisphereTable::masking(const std::vector<double>& d) const {
   std::vector<double> dm(points_.size());
-  for (size_t p = 0; p < points_.size(); ++p) {
-    const Stencil& s = points_[p].stencil;
-    double v = 0;
-    for (int q = 0; q < s.count; ++q) v += s.weight[size_t(q)] * d[size_t(s.node[size_t(q)])];
-    dm[p] = v * points_[p].weight;
-  }
+  for (size_t p = 0; p < points_.size(); ++p) dm[p] = points_[p].stencil.apply(d) * points_[p].weight;
   Masking out;
   out.n_theta = kAreaThetaSteps + 1;
   out.n_phi = n_phi_;

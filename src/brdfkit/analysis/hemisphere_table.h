@@ -28,13 +28,17 @@ class HemisphereTable {
   int node(int j, int k) const;  // ring j, azimuth k (any integer: periodic); the pole for j = 0
   double theta(int j) const { return theta_[size_t(j)]; }
   double phi(int k) const;
-  Vec3d direction(int j, int k) const;
 
   // D(h) = Σ weight · D[node] over at most four nodes; h a unit vector with h_z > 0.
   struct Stencil {
     std::array<int, 4> node{};
     std::array<double, 4> weight{};
     int count = 0;
+    double apply(const std::vector<double>& d) const {  // Σ weight · d[node]
+      double v = 0;
+      for (int q = 0; q < count; ++q) v += weight[size_t(q)] * d[size_t(node[size_t(q)])];
+      return v;
+    }
   };
   Stencil locate(const Vec3d& h) const;
   double eval(const std::vector<double>& d, const Vec3d& h) const;

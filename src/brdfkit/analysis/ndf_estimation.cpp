@@ -398,12 +398,7 @@ class Estimator {
     }
   }
 
-  double d_at(const State& st, size_t k) const {
-    const Stencil& at = s_.at[k];
-    double v = 0;
-    for (int q = 0; q < at.count; ++q) v += at.weight[size_t(q)] * st.d[size_t(at.node[size_t(q)])];
-    return v;
-  }
+  double d_at(const State& st, size_t k) const { return s_.at[k].apply(st.d); }
 
   // With D fixed: per channel, (kd, ks) ≥ 0 by 2×2 least squares (variable projection, seed 002 §3).
   void solve_colours(const std::vector<double>& g, State& st) const {

@@ -88,12 +88,17 @@ bool wait_for(const std::function<bool()>& ready, std::chrono::seconds limit = s
   return true;
 }
 
-// Every regular file under `dir` (relative path → size).
+// Every regular file under `dir` (relative path → size). Batches may be writing meanwhile: a file
+// renamed or removed between listing and reading (an atomic write's temporary) is skipped.
 std::map<std::string, uintmax_t> files_under(const fs::path& dir) {
   std::map<std::string, uintmax_t> out;
-  if (!fs::exists(dir)) return out;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) out[fs::relative(e.path(), dir).string()] = e.file_size();
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code gone;
+    if (!it->is_regular_file(gone)) continue;
+    const uintmax_t size = it->file_size(gone);
+    if (!gone) out[it->path().lexically_relative(dir).string()] = size;
+  }
   return out;
 }
 
