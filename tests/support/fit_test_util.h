@@ -6,6 +6,8 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -93,6 +95,23 @@ inline std::vector<std::pair<double, Rgb>> ten_degree_ring_albedos(const SampleS
   }
   return out;
 }
+
+// Samples laid out on the ten-degree incidence rings as a scattered measured file: eval() answers
+// nothing, as for a real one; the albedo comes from the samples (ten_degree_ring_albedos).
+class ScatteredData final : public MeasuredBrdf {
+ public:
+  ScatteredData(SampleSet samples, std::string path) : samples_(std::move(samples)), path_(std::move(path)) {}
+  std::string format() const override { return "scattered"; }
+  std::string path() const override { return path_; }
+  std::string dimensions() const override { return std::to_string(samples_.size()) + " samples"; }
+  std::optional<Rgb> eval(const Vec3d&, const Vec3d&) const override { return std::nullopt; }
+  SampleSet samples() const override { return samples_; }
+  std::vector<std::pair<double, Rgb>> albedos_from_samples() const override { return ten_degree_ring_albedos(samples_); }
+
+ private:
+  SampleSet samples_;
+  std::string path_;
+};
 
 inline fit::FitSettings with_procedure(fit::FitSettings s, const std::string& id) {
   s.procedure = id;

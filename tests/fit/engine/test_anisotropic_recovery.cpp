@@ -20,36 +20,23 @@ constexpr double kDeg = kPi / 180;
 // θi = 10°…80° at φi = 0°, 60°, 120°; outgoing rings 1 − cos θo = (k/10)², k = 0…9, 36 azimuths
 // each over the whole circle; a sample's weight is its ring's band of solid angle / its count /
 // the three azimuths of its θi, so the samples of one θi hold 2π (fit/metric/metric_samples.h).
-class AnisotropicSamples final : public MeasuredBrdf {
- public:
-  AnisotropicSamples(const Model& model, const ParamValues& values) {
-    const Brdf brdf(model, values);
-    auto edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
-    for (int i = 1; i <= 8; ++i)
-      for (double phi_i : {0.0, 60 * kDeg, 120 * kDeg})
-        for (int k = 0; k < 10; ++k) {
-          const double theta_o = std::acos(1 - std::pow(k / 10.0, 2));
-          const int n = k == 0 ? 1 : 36;
-          for (int j = 0; j < n; ++j) {
-            const Vec3d wi = spherical_direction(i * 10 * kDeg, phi_i),
-                        wo = spherical_direction(theta_o, 2 * kPi * j / n);
-            samples_.push_back(wi, wo, brdf.eval(wi, wo), 2 * kPi * (edge(k + 1) - edge(k)) / n / 3, true);
-          }
+test::ScatteredData anisotropic_samples(const Model& model, const ParamValues& values) {
+  SampleSet s;
+  const Brdf brdf(model, values);
+  auto edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
+  for (int i = 1; i <= 8; ++i)
+    for (double phi_i : {0.0, 60 * kDeg, 120 * kDeg})
+      for (int k = 0; k < 10; ++k) {
+        const double theta_o = std::acos(1 - std::pow(k / 10.0, 2));
+        const int n = k == 0 ? 1 : 36;
+        for (int j = 0; j < n; ++j) {
+          const Vec3d wi = spherical_direction(i * 10 * kDeg, phi_i),
+                      wo = spherical_direction(theta_o, 2 * kPi * j / n);
+          s.push_back(wi, wo, brdf.eval(wi, wo), 2 * kPi * (edge(k + 1) - edge(k)) / n / 3, true);
         }
-  }
-  std::string format() const override { return "scattered"; }
-  std::string path() const override { return "synthetic-anisotropic"; }
-  std::string dimensions() const override { return std::to_string(samples_.size()) + " samples"; }
-  std::optional<Rgb> eval(const Vec3d&, const Vec3d&) const override { return std::nullopt; }
-  SampleSet samples() const override { return samples_; }
-  // The albedo at each θi, averaged over its three azimuths (their weights hold the 1/3).
-  std::vector<std::pair<double, Rgb>> albedos_from_samples() const override {
-    return test::ten_degree_ring_albedos(samples_);
-  }
-
- private:
-  SampleSet samples_;
-};
+      }
+  return test::ScatteredData(std::move(s), "synthetic-anisotropic");
+}
 
 // The same lobe written with φ modulo π, and for two widths as (αx, αy, φ) = (αy, αx, φ + π/2)
 // (models/cook_torrance_anisotropic.h): the form of `got` whose widths are in `want`'s order.
@@ -90,7 +77,7 @@ TEST(AnisotropicRecovery, TurnedLobesAreFittedBackWithTheirOrientation) {
                                           std::tuple{"cook-torrance-beckmann-aniso", 0.3, 0.1, -1.1}}) {
     const Model& m = model_by_name(name);
     const ParamValues want = truth(m, ax, ay, phi);
-    const AnisotropicSamples data(m, want);
+    const test::ScatteredData data = anisotropic_samples(m, want);
     const ProcedureResult r = run_procedure(m, data, FitSettings{});
     expect_recovered(m, want, r.fit.values);
     std::printf("%s: %d iterations, ngan %.3g\n", name, r.fit.iterations, r.fit.metric_value);
@@ -106,7 +93,7 @@ TEST(AnisotropicRecovery, PoulinFournierCylindersAreFittedBack) {
                                            {"d", Rgb::Constant(0.3)},
                                            {"h", Rgb::Constant(0.6)},
                                            {"phi_t", Rgb::Constant(0.4)}});
-  const AnisotropicSamples data(m, want);
+  const test::ScatteredData data = anisotropic_samples(m, want);
   const ProcedureResult r = run_procedure(m, data, FitSettings{});
   expect_recovered(m, want, r.fit.values);
   std::printf("poulin-fournier: %d iterations, ngan %.3g\n", r.fit.iterations, r.fit.metric_value);
@@ -115,7 +102,7 @@ TEST(AnisotropicRecovery, PoulinFournierCylindersAreFittedBack) {
 TEST(AnisotropicRecovery, AGivenOrientationIsHeldAndTheRestFitted) {
   const Model& m = model_by_name("cook-torrance-ggx-aniso");
   const ParamValues want = truth(m, 0.2, 0.07, 1.0);
-  const AnisotropicSamples data(m, want);
+  const test::ScatteredData data = anisotropic_samples(m, want);
   const ProcedureResult r = run_procedure(m, data, FitSettings{.bounds = {{"phi_t", {1.0, 1.0}}}});
   expect_recovered(m, want, r.fit.values);
   // A wrong given orientation cannot reach the truth.

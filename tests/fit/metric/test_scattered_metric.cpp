@@ -21,36 +21,24 @@ constexpr double kDeg = kPi / 180;
 
 // Scattered samples of a model in the layout of the Cornell files (measured/cornell.h): θi =
 // 10°…80°, rings 1 − cos θo = (k/10)², k = 0…9, `per_ring` azimuths on the half plane
-// φo ∈ [−180°, 0°], weight = the ring's band of solid angle / its sample count. eval() answers
-// nothing, as for a real scattered file.
-class ScatteredModel final : public MeasuredBrdf {
- public:
-  ScatteredModel(const Model& model, const ParamValues& values, int per_ring = 19) {
-    const Brdf brdf(model, values);
-    auto edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
-    for (int i = 1; i <= 8; ++i)
-      for (int k = 0; k < 10; ++k) {
-        const double theta_o = std::acos(1 - std::pow(k / 10.0, 2));
-        const int n = k == 0 ? 1 : per_ring;
-        for (int j = 0; j < n; ++j) {
-          const double phi = n == 1 ? 0.0 : -kPi * j / (n - 1);
-          const Vec3d wi = spherical_direction(i * 10 * kDeg, 0.0), wo = spherical_direction(theta_o, phi);
-          samples_.push_back(wi, wo, brdf.eval(wi, wo), 2 * kPi * (edge(k + 1) - edge(k)) / n, true);
-        }
+// φo ∈ [−180°, 0°], weight = the ring's band of solid angle / its sample count; as a scattered
+// file, which eval() answers nothing for.
+test::ScatteredData scattered_model(const Model& model, const ParamValues& values, int per_ring = 19) {
+  SampleSet s;
+  const Brdf brdf(model, values);
+  auto edge = [](int k) { return k <= 0 ? 0.0 : k >= 10 ? 1.0 : std::pow((k - 0.5) / 10, 2); };
+  for (int i = 1; i <= 8; ++i)
+    for (int k = 0; k < 10; ++k) {
+      const double theta_o = std::acos(1 - std::pow(k / 10.0, 2));
+      const int n = k == 0 ? 1 : per_ring;
+      for (int j = 0; j < n; ++j) {
+        const double phi = n == 1 ? 0.0 : -kPi * j / (n - 1);
+        const Vec3d wi = spherical_direction(i * 10 * kDeg, 0.0), wo = spherical_direction(theta_o, phi);
+        s.push_back(wi, wo, brdf.eval(wi, wo), 2 * kPi * (edge(k + 1) - edge(k)) / n, true);
       }
-  }
-  std::string format() const override { return "scattered"; }
-  std::string path() const override { return "synthetic-scattered"; }
-  std::string dimensions() const override { return std::to_string(samples_.size()) + " samples"; }
-  std::optional<Rgb> eval(const Vec3d&, const Vec3d&) const override { return std::nullopt; }
-  SampleSet samples() const override { return samples_; }
-  std::vector<std::pair<double, Rgb>> albedos_from_samples() const override {
-    return test::ten_degree_ring_albedos(samples_);
-  }
-
- private:
-  SampleSet samples_;
-};
+    }
+  return test::ScatteredData(std::move(s), "synthetic-scattered");
+}
 
 // Incidence band of θi = 10°·g between the midpoints to its neighbours (metric_samples.h).
 double band(int g) {
@@ -65,7 +53,7 @@ TEST(ScatteredMetric, NganOfAConstantDifferenceUsesTheSamplesPairMeasure) {
   const Model& m = model_by_name("lambert");
   const ParamValues measured = make_values(m, {{"kd", Rgb::Constant(0.5)}});
   const ParamValues fitted = make_values(m, {{"kd", Rgb::Constant(0.3)}});
-  const ScatteredModel data(m, measured);
+  const test::ScatteredData data = scattered_model(m, measured);
   const Metric metric = make_metric("ngan", data);
   EXPECT_TRUE(metric.on_samples());
   EXPECT_EQ(metric.sample_count(), size_t(8 * (1 + 9 * 19)));
@@ -95,7 +83,7 @@ TEST(ScatteredMetric, SyntheticScatteredSetIsFittedBackToItsParameters) {
                                            {"ks", Rgb(0.9, 0.7, 0.6)},
                                            {"alpha", Rgb::Constant(0.25)},
                                            {"F0", Rgb(0.05, 0.04, 0.08)}});
-  const ScatteredModel data(m, want);
+  const test::ScatteredData data = scattered_model(m, want);
   for (const char* id : {"ngan", "bagher", "low-e1", "low-e2", "hp-rmse"}) {
     SCOPED_TRACE(id);
     const Metric metric = make_metric(id, data);
