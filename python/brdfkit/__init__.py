@@ -17,6 +17,7 @@ missing file; OSError (brdfkit.OutputError) for an output that cannot be written
 """
 
 import os as _os
+import warnings as _warnings
 
 from . import _brdfkit
 from ._brdfkit import (  # noqa: F401  (the public classes and functions documented in the extension)
@@ -122,14 +123,18 @@ def tabulate(brdf, *, clamp_negative=False) -> MerlTable:
     return _tabulate(_brdf_of(brdf), clamp_negative)
 
 
-def convert(source, output, *, theta_i=16, grid=64, description="") -> None:
+def convert(source, output, *, theta_i=16, phi_i=0, symmetry=0, grid=0, description="") -> str:
     """Writes measured data, a Brdf or a Fit as `brdfkit convert` does: MERL .binary or RGL .bsdf by the extension.
 
     source: a Measured (or a path to one), a Brdf or a Fit. RGL output (Dupuy & Jakob 2018's
-    parameterization, readable by Mitsuba 3's `measured`): theta_i incidence nodes from 0 to 90 deg,
-    a grid x grid colour table per node, the file's description. MERL cells the source has no value
-    for are written as not measured. ValueError for another extension or bad options; the file is
-    written atomically.
+    parameterization, readable by Mitsuba 3's `measured`): theta_i incidence nodes from 0 to 90 deg;
+    phi_i incidence azimuths (1: an isotropic file; 0: 1 for an isotropic source, 24 steps around
+    the circle for an anisotropic one); symmetry 1, 2 or 4 (an anisotropic file stores all, half or
+    a quarter of the azimuths; 0: as probed from the source); a grid x grid colour table per node
+    (0: 64, 32 when anisotropic); the file's description. MERL cells the source has no value for are
+    written as not measured. Returns what was written; a layout that drops the source's anisotropy
+    or assumes a symmetry it lacks raises a UserWarning. ValueError for another extension or bad
+    options; the file is written atomically.
     """
     if isinstance(source, (str, _os.PathLike)):
         source = load(source)
@@ -137,7 +142,10 @@ def convert(source, output, *, theta_i=16, grid=64, description="") -> None:
         source = source.brdf
     if not isinstance(source, (Measured, Brdf)):
         raise TypeError(f"expected a brdfkit.Measured, Brdf or Fit, or a path, got {type(source).__name__}")
-    _brdfkit._write_measured(source, _os.fspath(output), theta_i, grid, description)
+    written, warned = _brdfkit._write_measured(source, _os.fspath(output), theta_i, phi_i, symmetry, grid, description)
+    for text in warned:
+        _warnings.warn(text, stacklevel=2)
+    return written
 
 
 def render(subjects, output=None, *, env=None, env_rotation=0.0, env_intensity=1.0, env_constant=None,

@@ -95,16 +95,26 @@ albedo info()['albedo'] gives.)")
         return to_python(j);
       }, "What `brdfkit info --json` says of the file: shape, valid share, value ranges, albedo a(theta_i) at 0..80 deg.");
   // brdfkit.convert's two sources; the format comes from the output's extension (write_measured.h).
+  // Returns what was written and the warnings, which the Python side raises as warnings.
+  using Written = std::pair<std::string, std::vector<std::string>>;
+  auto write = [](const RglSource& source, const std::filesystem::path& out, const MeasuredWriteRequest& r) {
+    Written w;
+    w.first = write_measured(out, source, r, [&w](const std::string& text) { w.second.push_back(text); });
+    return w;
+  };
+  auto request = [](int theta_i, int phi_i, int symmetry, int grid, const std::string& description) {
+    return MeasuredWriteRequest{theta_i, phi_i, symmetry, grid, description};
+  };
   m.def("_write_measured",
-        [](Measured& d, const std::filesystem::path& out, int theta_i, int grid, const std::string& description) {
-          const RglWriteOptions opt{.theta_i = theta_i, .grid = grid, .description = description};
-          write_measured(out, [&d](const Vec3d& wi, const Vec3d& wo) { return d.data().eval(wi, wo); }, opt);
+        [=](Measured& d, const std::filesystem::path& out, int theta_i, int phi_i, int symmetry, int grid, const std::string& description) {
+          return write([&d](const Vec3d& wi, const Vec3d& wo) { return d.data().eval(wi, wo); }, out,
+                       request(theta_i, phi_i, symmetry, grid, description));
         },
         py::call_guard<py::gil_scoped_release>());
   m.def("_write_measured",
-        [](const Brdf& b, const std::filesystem::path& out, int theta_i, int grid, const std::string& description) {
-          const RglWriteOptions opt{.theta_i = theta_i, .grid = grid, .description = description};
-          write_measured(out, [&b](const Vec3d& wi, const Vec3d& wo) { return std::optional<Rgb>(b.eval(wi, wo)); }, opt);
+        [=](const Brdf& b, const std::filesystem::path& out, int theta_i, int phi_i, int symmetry, int grid, const std::string& description) {
+          return write([&b](const Vec3d& wi, const Vec3d& wo) { return std::optional<Rgb>(b.eval(wi, wo)); }, out,
+                       request(theta_i, phi_i, symmetry, grid, description));
         },
         py::call_guard<py::gil_scoped_release>());
 }

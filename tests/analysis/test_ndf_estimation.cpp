@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "brdfkit/analysis/ndf_estimation.h"
 #include "brdfkit/analysis/projected_area_masking.h"
@@ -152,21 +153,22 @@ std::array<double, 12> worst_below(const analysis::AnisotropicNdfEstimate& e) {
   return worst;
 }
 
-// The estimate from anisotropic_ggx_samples(kd_scale) with F0 given, and its errors, printed.
+// The estimate from anisotropic_ggx_samples(kd_scale) with F0 given (or fitted), and its errors,
+// printed.
 struct Estimate {
   analysis::AnisotropicNdfEstimate e;
   std::array<double, 12> worst;
 };
-Estimate estimate(double kd_scale, const char* what) {
+Estimate estimate(double kd_scale, const char* what, std::optional<double> f0 = 0.3) {
   analysis::NdfEstimationOptions opt;
-  opt.f0 = 0.3;
+  opt.f0 = f0;
   Estimate r{analysis::estimate_anisotropic_ndf(anisotropic_ggx_samples(kd_scale), opt), {}};
   r.worst = worst_below(r.e);
   const auto& v = r.e.values.values;
   std::printf("%s: %d masking iterations; max rel. error of D below 15/30/45/60 deg: %.4f %.4f %.4f %.4f; "
-              "kd = %.4f %.4f %.4f, ks = %.4f %.4f %.4f\n",
+              "kd = %.4f %.4f %.4f, ks = %.4f %.4f %.4f, F0 = %.4f\n",
               what, r.e.iterations, r.worst[2], r.worst[5], r.worst[8], r.worst[11], v[0][0], v[1][0], v[2][0], v[0][1],
-              v[1][1], v[2][1]);
+              v[1][1], v[2][1], r.e.f0);
   return r;
 }
 
@@ -178,6 +180,14 @@ TEST(AnisotropicNdfEstimation, RecoversAnisotropicGgx) {
   EXPECT_LE(r.e.iterations, 5);
   for (int c = 0; c < 3; ++c) EXPECT_LT(r.e.values.values[size_t(c)][0], 1e-3);
   EXPECT_NEAR(r.e.values.values[2][1], 0.7, 0.01 * 0.7);
+}
+
+// F0 fitted in the outermost loop, with the hemisphere table (the isotropic estimate's F0 fits the
+// azimuthal mean of D: from it the table's iteration went astray).
+TEST(AnisotropicNdfEstimation, FittedF0IsTheLobes) {
+  const Estimate r = estimate(0, "anisotropic GGX (0.2, 0.4) turned 0.5 rad, no diffuse, F0 fitted", std::nullopt);
+  EXPECT_NEAR(r.e.f0, 0.3, 0.01);
+  EXPECT_LT(r.worst[11], 0.02);
 }
 
 // With a diffuse term the far tail of D trades against kd (a flat D tail and the Lambertian term

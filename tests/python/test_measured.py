@@ -99,3 +99,17 @@ def test_convert_writes_what_the_cli_writes(tmp_path):
     with pytest.raises(ValueError, match="extension"):
         brdfkit.convert(ward, tmp_path / "ward.txt")
     assert not (tmp_path / "ward.txt").exists()
+
+
+def test_convert_writes_anisotropic_sources_as_anisotropic_files(tmp_path):
+    # The layout follows the probed symmetry; dropping the anisotropy warns.
+    lobe = brdfkit.Brdf("cook-torrance-ggx-aniso", kd=0.1, ks=0.9, alpha_x=0.15, alpha_y=0.3, phi_t=0.7, F0=0.5)
+    written = brdfkit.convert(lobe, tmp_path / "aniso.bsdf", theta_i=9, grid=24)
+    assert written == "anisotropic RGL tensor_file (13 phi_i nodes over 1/2 of the azimuths)"
+    back = brdfkit.load(tmp_path / "aniso.bsdf")
+    assert "13 phi_i (anisotropic, 1/2 of the azimuths) x 9 theta_i x 24x24" in back.dimensions
+    for phi in (20, 110, 200, 290):  # folded by a half turn where sin(phi) > 0
+        wi, wo = unit(35, phi), unit(40, phi + 150)
+        np.testing.assert_allclose(back.eval(wi, wo), lobe.eval(wi, wo), rtol=0.05)
+    with pytest.warns(UserWarning, match="a MERL table is isotropic"):
+        assert brdfkit.convert(lobe, tmp_path / "aniso.binary") == "MERL"

@@ -457,13 +457,14 @@ const NdfEstimationOptions& checked(const NdfEstimationOptions& opt) {
   return opt;
 }
 
-Outcome run(const Estimator& est, const NdfEstimationOptions& opt) {
-  if (opt.f0) return est.run(*opt.f0, opt.max_iterations);
+// `start`: the masking the iterations start from (nullptr: the constant one of seed 002 §5.1).
+Outcome run(const Estimator& est, const NdfEstimationOptions& opt, const std::function<double(const Vec3d&)>& start = {}) {
+  if (opt.f0) return est.run(*opt.f0, opt.max_iterations, start);
   // F0 in the outermost loop (seed 002 §5.1): Brent on the residual, two masking iterations per
   // trial (the masking moves little with F0), then the full estimate at the best F0.
   const auto best = boost::math::tools::brent_find_minima(
-      [&](double f0) { return est.run(f0, std::min(2, opt.max_iterations)).residual_history.back(); }, 0.0, 1.0, 12);
-  return est.run(best.first, opt.max_iterations);
+      [&](double f0) { return est.run(f0, std::min(2, opt.max_iterations), start).residual_history.back(); }, 0.0, 1.0, 12);
+  return est.run(best.first, opt.max_iterations, start);
 }
 
 // kd, ks, F0 per channel: TabulatedCookTorrance's parameters.
@@ -514,15 +515,17 @@ NdfEstimate estimate_tabulated_ndf(const SampleSet& samples, const NdfEstimation
 AnisotropicNdfEstimate estimate_anisotropic_ndf(const SampleSet& samples, const NdfEstimationOptions& opt) {
   const double wsum = weight_sum(samples);
   auto finish = [wsum](double sum) { return std::sqrt(sum / wsum); };
-  // The isotropic estimate first: its F0, and its masking (that of the azimuthal mean of D) as the
-  // start of the hemisphere table's iteration. From the constant masking of seed 002 §5.1 the
-  // hemisphere table converges slowly (GGX αx 0.2, αy 0.4: D still 26 % off at 55° after five
-  // Anderson-accelerated iterations, 2 % at the fixed point); from this start five suffice.
+  // The isotropic estimate first: its masking (that of the azimuthal mean of D) is the start of the
+  // hemisphere table's iteration. From the constant masking of seed 002 §5.1 the hemisphere table
+  // converges slowly (GGX αx 0.2, αy 0.4: D still 26 % off at 55° after five Anderson-accelerated
+  // iterations, 2 % at the fixed point); from this start five suffice. F0, when not given, is
+  // searched again with the hemisphere table: the isotropic estimate's F0 fits the mean of D, not D
+  // (0.26 for that lobe with F0 = 0.5, and then the table's iteration diverged: D 5× off at its peak).
   const ThetaLayout theta_layout(checked(opt).nodes);
   const Outcome mean = run(Estimator(samples, theta_layout, finish, opt), opt);
-  auto start = theta_layout.masking(mean.state.d);
+  const auto start = theta_layout.masking(mean.state.d);
   const HemisphereLayout layout(opt.rings, opt.azimuths);
-  const Outcome o = Estimator(samples, layout, finish, opt).run(mean.f0, opt.max_iterations, start);
+  const Outcome o = run(Estimator(samples, layout, finish, opt), opt, start);
   return {layout.table(), o.state.d, colours(o), o.iterations, o.f0, o.residual_history};
 }
 

@@ -31,6 +31,10 @@ class MeasuredBrdf {
     out.resize(wo.size());
     for (size_t k = 0; k < wo.size(); ++k) out[k] = eval(wi, wo[k]);
   }
+  // Whether ρ is unchanged by a rotation of both directions about the normal. Metrics integrate
+  // anisotropic data over their own samples (all incidence azimuths), not over a grid with wi at
+  // φ = 0 (fit/metric/metric.cpp).
+  virtual bool isotropic() const { return true; }
   // The data's own MERL cells when it is a MERL table (metrics then integrate over the cells,
   // fit/metric/metric_cells.h); nullptr otherwise.
   virtual const merl::Table* merl_cells() const { return nullptr; }

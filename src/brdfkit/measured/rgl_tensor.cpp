@@ -176,8 +176,10 @@ void check_grids(const std::string& path, const std::vector<std::uint8_t>& bytes
     t.require_each([&](float x) { return x >= 0 && x <= half_pi; }, "must lie in [0, π/2]");
     t.require_increasing();
   });
-  check_table(path, bytes, fields, "phi_i",
-              [&](const TableView& t) { t.require_each([&](float x) { return x >= -pi && x <= pi; }, "must lie in [-π, π]"); });
+  check_table(path, bytes, fields, "phi_i", [&](const TableView& t) {
+    t.require_each([&](float x) { return x >= -pi && x <= pi; }, "must lie in [-π, π]");
+    t.require_increasing();
+  });
   check_table(path, bytes, fields, "wavelengths", [](const TableView& t) {
     t.require_each([](float x) { return x > 0; }, "must be > 0 (nm)");
     t.require_increasing();
@@ -255,7 +257,7 @@ const Field& required_field(const std::string& path, const std::map<std::string,
   return it->second;
 }
 
-// The colour table as three channel tables of nt × grid × grid values: `rgb`, or `spectra` +
+// The colour table as three channel tables of nphi × nt × grid × grid values: `rgb`, or `spectra` +
 // `wavelengths` converted node by node (spectral_rgb.h).
 struct ColourTable {
   std::array<std::vector<float>, 3> rgb;
@@ -263,16 +265,16 @@ struct ColourTable {
   bool spectral = false;
 };
 ColourTable read_colour_table(const std::vector<std::uint8_t>& bytes, const std::string& path,
-                              const std::map<std::string, Field>& fields, size_t nt, size_t grid) {
-  const size_t cells = grid * grid;
+                              const std::map<std::string, Field>& fields, size_t nphi, size_t nt, size_t grid) {
+  const size_t cells = grid * grid, slices = nphi * nt;
   ColourTable out;
-  for (auto& c : out.rgb) c.resize(nt * cells);
+  for (auto& c : out.rgb) c.resize(slices * cells);
   if (fields.count("rgb")) {
     const Field& f = required_field(path, fields, "rgb", TensorType::Float32, 5);
-    if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != 3 || f.shape[3] != grid || f.shape[4] != grid)
-      throw InputError(path, fmt::format("field 'rgb' has shape {}, expected [1,{},3,{},{}]", shape_string(f.shape), nt, grid, grid));
+    if (f.shape[0] != nphi || f.shape[1] != nt || f.shape[2] != 3 || f.shape[3] != grid || f.shape[4] != grid)
+      throw InputError(path, fmt::format("field 'rgb' has shape {}, expected [{},{},3,{},{}]", shape_string(f.shape), nphi, nt, grid, grid));
     const std::vector<float> v = floats(bytes, f);
-    for (size_t t = 0; t < nt; ++t)
+    for (size_t t = 0; t < slices; ++t)
       for (size_t c = 0; c < 3; ++c)
         for (size_t i = 0; i < cells; ++i) {
           const float x = v[(t * 3 + c) * cells + i];
@@ -288,13 +290,14 @@ ColourTable read_colour_table(const std::vector<std::uint8_t>& bytes, const std:
   const std::vector<float> wl_f = floats(bytes, wf);
   const size_t nl = wl_f.size();
   if (nl == 0) throw InputError(path, "field 'wavelengths' is empty: 'spectra' needs at least one wavelength");
-  if (f.shape[0] != 1 || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != grid || f.shape[4] != grid)
-    throw InputError(path, fmt::format("field 'spectra' has shape {}, expected [1,{},{},{},{}]", shape_string(f.shape), nt, nl, grid, grid));
+  if (f.shape[0] != nphi || f.shape[1] != nt || f.shape[2] != nl || f.shape[3] != grid || f.shape[4] != grid)
+    throw InputError(path, fmt::format("field 'spectra' has shape {}, expected [{},{},{},{},{}]", shape_string(f.shape), nphi, nt, nl,
+                                       grid, grid));
   const std::vector<double> wl(wl_f.begin(), wl_f.end());
   const Eigen::MatrixXd m = default_spectrum_to_rgb().matrix(wl);
   const std::vector<float> v = floats(bytes, f);
   Eigen::VectorXd s{Eigen::Index(nl)};
-  for (size_t t = 0; t < nt; ++t)
+  for (size_t t = 0; t < slices; ++t)
     for (size_t i = 0; i < cells; ++i) {
       for (size_t l = 0; l < nl; ++l) {
         s[Eigen::Index(l)] = v[(t * nl + l) * cells + i];
@@ -304,6 +307,26 @@ ColourTable read_colour_table(const std::vector<std::uint8_t>& bytes, const std:
       for (size_t k = 0; k < 3; ++k) out.rgb[k][t * cells + i] = float(c[Eigen::Index(k)]);
     }
   return out;
+}
+
+// The incidence-azimuth layout of Mitsuba 3's `measured` (src/bsdfs/measured.cpp): at most two
+// phi_i entries is an isotropic file (half-vector azimuths relative to φi); more is anisotropic,
+// its phi_i range one of 1, 2 or 4 copies that fill the circle. Files whose range is not
+// [-π, -π + 2π/copies] would be misread by that plugin's mirroring, so they are refused.
+int azimuth_reduction(const std::string& path, const std::vector<float>& phi_i) {
+  if (phi_i.size() <= 2) return 1;
+  const double range = double(phi_i.back()) - double(phi_i.front());
+  const int reduction = int(std::rint(2 * kPi / range));
+  if (reduction != 1 && reduction != 2 && reduction != 4)
+    throw InputError(path, fmt::format("field 'phi_i' spans {:.4f} rad: an anisotropic file spans 2π, π or π/2 (1, 2 or 4 copies "
+                                       "fill the circle)",
+                                       range));
+  constexpr double kTolerance = 1e-3;  // float nodes
+  if (std::abs(phi_i.front() + kPi) > kTolerance || std::abs(range - 2 * kPi / reduction) > kTolerance)
+    throw InputError(path, fmt::format("field 'phi_i' runs from {:.4f} to {:.4f}: an anisotropic file holding 1/{} of the azimuths "
+                                       "runs from -π to {:.4f}",
+                                       phi_i.front(), phi_i.back(), reduction, -kPi + 2 * kPi / reduction));
+  return reduction;
 }
 
 }  // namespace
@@ -327,29 +350,30 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
     description_ = std::string(reinterpret_cast<const char*>(bytes.data() + it->second.offset), it->second.count());
 
   theta_i_ = floats(bytes, theta_f);
-  const std::vector<float> phi_i = floats(bytes, phi_f);
-  const size_t nt = theta_i_.size();
-  if (phi_i.size() != 1)
-    throw InputError(path_, fmt::format("field 'phi_i' has {} entries: only isotropic files (one phi_i) are supported", phi_i.size()));
+  phi_i_ = floats(bytes, phi_f);
+  const size_t nt = theta_i_.size(), np = phi_i_.size();
+  if (np < 1) throw InputError(path_, "field 'phi_i' needs at least 1 entry");
   if (nt < 2) throw InputError(path_, "field 'theta_i' needs at least 2 entries");
   if (jac_f.count() != 1) throw InputError(path_, "field 'jacobian' must hold one value");
   jacobian_ = bytes[jac_f.offset] != 0;
 
   const auto& vs = vndf_f.shape;
   const auto& ls = lum_f.shape;
-  if (vs[0] != 1 || vs[1] != nt || vs[2] < 2 || vs[3] < 2)
-    throw InputError(path_, fmt::format("field 'vndf' has shape {}, expected [1,{},ny,nx]", shape_string(vs), nt));
-  if (ls[0] != 1 || ls[1] != nt || ls[2] != ls[3] || ls[2] < 2)
-    throw InputError(path_, fmt::format("field 'luminance' has shape {}, expected [1,{},n,n]", shape_string(ls), nt));
+  if (vs[0] != np || vs[1] != nt || vs[2] < 2 || vs[3] < 2)
+    throw InputError(path_, fmt::format("field 'vndf' has shape {}, expected [{},{},ny,nx]", shape_string(vs), np, nt));
+  if (ls[0] != np || ls[1] != nt || ls[2] != ls[3] || ls[2] < 2)
+    throw InputError(path_, fmt::format("field 'luminance' has shape {}, expected [{},{},n,n]", shape_string(ls), np, nt));
   for (const Field* f : {&sigma_f, &ndf_f})
     if (f->shape[0] < 2 || f->shape[1] < 2) throw InputError(path_, fmt::format("fields 'sigma'/'ndf' need at least 2 x 2 entries, found {}", shape_string(f->shape)));
   check_tables(path_, bytes, fields);
+  isotropic_ = np <= 2;
+  reduction_ = azimuth_reduction(path_, phi_i_);
   grid_ = int(ls[2]);
-  ColourTable colour = read_colour_table(bytes, path_, fields, nt, size_t(grid_));
+  ColourTable colour = read_colour_table(bytes, path_, fields, np, nt, size_t(grid_));
   spectral_ = colour.spectral;
   negative_values_ = colour.negative_values;
 
-  const std::vector<std::vector<float>> params = {phi_i, theta_i_};
+  const std::vector<std::vector<float>> params = {phi_i_, theta_i_};
   ndf_ = MarginalWarp2D(floats(bytes, ndf_f).data(), int(ndf_f.shape[1]), int(ndf_f.shape[0]), {}, false);
   sigma_ = MarginalWarp2D(floats(bytes, sigma_f).data(), int(sigma_f.shape[1]), int(sigma_f.shape[0]), {}, false);
   vndf_ = MarginalWarp2D(floats(bytes, vndf_f).data(), int(vs[3]), int(vs[2]), params, true);
@@ -360,15 +384,26 @@ RglBrdf::RglBrdf(const std::filesystem::path& file) : path_(file.string()) {
 }
 
 std::string RglBrdf::dimensions() const {
-  return fmt::format("{} theta_i x {}x{} {} grid (jacobian {}){}", theta_i_.size(), grid_, grid_, spectral_ ? "spectral->rgb" : "rgb",
-                     jacobian_ ? 1 : 0, description_.empty() ? "" : ", \"" + description_ + "\"");
+  const std::string azimuths =
+      isotropic_ ? "" : fmt::format("{} phi_i (anisotropic, 1/{} of the azimuths) x ", phi_i_.size(), reduction_);
+  return fmt::format("{}{} theta_i x {}x{} {} grid (jacobian {}){}", azimuths, theta_i_.size(), grid_, grid_,
+                     spectral_ ? "spectral->rgb" : "rgb", jacobian_ ? 1 : 0, description_.empty() ? "" : ", \"" + description_ + "\"");
+}
+
+RglBrdf::Fold RglBrdf::fold(const Vec3d& wc) const {
+  if (reduction_ < 2) return {};
+  // Mitsuba 3 `measured`: mulsign_neg(v, s) negates v unless s's sign bit is set.
+  const double sy = std::signbit(wc.y()) ? 1.0 : -1.0;
+  const double sx = reduction_ == 4 ? (std::signbit(wc.x()) ? 1.0 : -1.0) : sy;
+  return {sx, sy};
 }
 
 std::optional<Rgb> RglBrdf::eval(const Vec3d& wi, const Vec3d& wo) const { return eval_conditioned(wi, wo, true); }
 
 namespace {
-// The part of a look-up that depends on ωc alone: its angles, the interpolation weights of its
-// (φc, θc) between the tables' theta_i nodes, σ(ωc). Computed once for all samples that share ωc.
+// The part of a look-up that depends on ωc alone (folded into the stored azimuths): its angles, the
+// interpolation weights of its (φc, θc) between the tables' nodes, σ(ωc). Computed once for all
+// samples that share ωc.
 struct Conditioning {
   double params[2];
   MarginalWarp2D::Weights weights;
@@ -391,40 +426,55 @@ struct Lookup {
   double factor;
 };
 
-// Shared by every evaluation (single pairs and eval_row), so they agree by construction.
-std::optional<Lookup> lookup_pair(const Vec3d& wc, const Conditioning& c, const Vec3d& wx, bool cosine_of_other,
-                                  bool jacobian, const MarginalWarp2D& vndf, const MarginalWarp2D& ndf) {
-  if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
-  const Vec3d m = (wc + wx).normalized();
-  const double theta_m = elevation(m), phi_m = std::atan2(m.y(), m.x());
-  // Isotropic: the half vector's azimuth is taken relative to ωc's (Dupuy & Jakob 2018 §6).
-  Vec2d u_m(theta2u(theta_m), phi2u(phi_m - c.params[0]));
+// The half vector's unit-square coordinates: its azimuth relative to ωc's in an isotropic file
+// (Dupuy & Jakob 2018 §6), absolute in an anisotropic one (Mitsuba 3 `measured`).
+Vec2d half_vector_coordinates(const Vec3d& m, double phi_c, bool isotropic) {
+  Vec2d u_m(theta2u(elevation(m)), phi2u(std::atan2(m.y(), m.x()) - (isotropic ? phi_c : 0.0)));
   u_m.y() -= std::floor(u_m.y());
-  Lookup r;
-  r.sample = vndf.invert(u_m, c.weights).first;
-  const double cos_theta = cosine_of_other ? wx.z() : wc.z();
-  // DESIGN.md §2: ρ = table · D(h) / (4 σ(ωc) cos θx); with jacobian = 0 the table holds ρ·cos θx.
-  r.factor = jacobian ? ndf.eval(u_m) / (4 * c.sigma * cos_theta) : 1 / cos_theta;
-  return r;
+  return u_m;
 }
+
+// The tables a look-up reads, shared by every evaluation (single pairs and eval_row), so they agree
+// by construction. The pair must already be folded (RglBrdf::fold).
+struct LookupTables {
+  const MarginalWarp2D& vndf;
+  const MarginalWarp2D& ndf;
+  bool jacobian, isotropic;
+
+  std::optional<Lookup> operator()(const Vec3d& wc, const Conditioning& c, const Vec3d& wx, bool cosine_of_other) const {
+    if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
+    const Vec2d u_m = half_vector_coordinates((wc + wx).normalized(), c.params[0], isotropic);
+    Lookup r;
+    r.sample = vndf.invert(u_m, c.weights).first;
+    const double cos_theta = cosine_of_other ? wx.z() : wc.z();
+    // DESIGN.md §2: ρ = table · D(h) / (4 σ(ωc) cos θx); with jacobian = 0 the table holds ρ·cos θx.
+    r.factor = jacobian ? ndf.eval(u_m) / (4 * c.sigma * cos_theta) : 1 / cos_theta;
+    return r;
+  }
+};
 }  // namespace
 
-std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc, const Vec3d& wx, bool cosine_of_other) const {
-  if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
+std::optional<Rgb> RglBrdf::eval_conditioned(const Vec3d& wc_in, const Vec3d& wx_in, bool cosine_of_other) const {
+  if (!(wc_in.z() > 0) || !(wx_in.z() > 0)) return std::nullopt;
+  const Fold f = fold(wc_in);
+  const Vec3d wc = f(wc_in), wx = f(wx_in);
   const Conditioning c = condition_on(wc, vndf_, sigma_);
-  const auto l = lookup_pair(wc, c, wx, cosine_of_other, jacobian_, vndf_, ndf_);
+  const auto l = LookupTables{vndf_, ndf_, jacobian_, isotropic_}(wc, c, wx, cosine_of_other);
   if (!l) return std::nullopt;
   Rgb v;
   for (int k = 0; k < 3; ++k) v[k] = rgb_[size_t(k)].eval(l->sample, c.weights);
   return Rgb(v * l->factor);
 }
 
-void RglBrdf::eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
+void RglBrdf::eval_row(const Vec3d& wi_in, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
   out.assign(wo.size(), std::nullopt);
-  if (!(wi.z() > 0)) return;
+  if (!(wi_in.z() > 0)) return;
+  const Fold f = fold(wi_in);
+  const Vec3d wi = f(wi_in);
   const Conditioning c = condition_on(wi, vndf_, sigma_);
+  const LookupTables lookup{vndf_, ndf_, jacobian_, isotropic_};
   for (size_t k = 0; k < wo.size(); ++k) {
-    const auto l = lookup_pair(wi, c, wo[k], true, jacobian_, vndf_, ndf_);
+    const auto l = lookup(wi, c, f(wo[k]), true);
     if (!l) continue;
     const MarginalWarp2D::Patch patch = rgb_[0].locate(l->sample);  // the colour tables share their grid
     Rgb v;
@@ -433,24 +483,32 @@ void RglBrdf::eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<s
   }
 }
 
-std::optional<double> RglBrdf::eval_luminance(const Vec3d& wi, const Vec3d& wo) const {
-  if (!(wi.z() > 0) || !(wo.z() > 0)) return std::nullopt;
+std::optional<double> RglBrdf::eval_luminance(const Vec3d& wi_in, const Vec3d& wo_in) const {
+  if (!(wi_in.z() > 0) || !(wo_in.z() > 0)) return std::nullopt;
+  const Fold f = fold(wi_in);
+  const Vec3d wi = f(wi_in);
   const Conditioning c = condition_on(wi, vndf_, sigma_);
-  const auto l = lookup_pair(wi, c, wo, true, jacobian_, vndf_, ndf_);
+  const auto l = LookupTables{vndf_, ndf_, jacobian_, isotropic_}(wi, c, f(wo_in), true);
   if (!l) return std::nullopt;
   return luminance_.eval(l->sample, c.weights) * l->factor;
 }
 
-std::optional<Vec2d> RglBrdf::table_coordinates(const Vec3d& wc, const Vec3d& wx) const {
-  if (!(wc.z() > 0) || !(wx.z() > 0)) return std::nullopt;
-  const auto l = lookup_pair(wc, condition_on(wc, vndf_, sigma_), wx, true, jacobian_, vndf_, ndf_);
+std::optional<Vec2d> RglBrdf::table_coordinates(const Vec3d& wc_in, const Vec3d& wx_in) const {
+  if (!(wc_in.z() > 0) || !(wx_in.z() > 0)) return std::nullopt;
+  const Fold f = fold(wc_in);
+  const Vec3d wc = f(wc_in);
+  const auto l = LookupTables{vndf_, ndf_, jacobian_, isotropic_}(wc, condition_on(wc, vndf_, sigma_), f(wx_in), true);
   if (!l) return std::nullopt;
   return l->sample;
 }
 
-Rgb RglBrdf::rgb_node(size_t t, int y, int x) const {
-  const size_t i = t * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x);
+Rgb RglBrdf::rgb_node(size_t slice, int y, int x) const {
+  const size_t i = slice * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x);
   return Rgb(rgb_raw_[0][i], rgb_raw_[1][i], rgb_raw_[2][i]);
+}
+
+double RglBrdf::luminance_node(size_t slice, int y, int x) const {
+  return luminance_raw_[slice * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x)];
 }
 
 double RglBrdf::ndf(const Vec3d& m) const {
@@ -461,80 +519,103 @@ double RglBrdf::sigma(const Vec3d& w) const {
   return sigma_.eval(Vec2d(theta2u(elevation(w)), phi2u(std::atan2(w.y(), w.x()))));
 }
 
-double RglBrdf::luminance_node(size_t t, int y, int x) const {
-  return luminance_raw_[t * size_t(grid_) * size_t(grid_) + size_t(y) * size_t(grid_) + size_t(x)];
+Vec3d RglBrdf::incidence(size_t slice) const {
+  return spherical_direction(double(theta_i_[slice % theta_i_.size()]), double(phi_i_[slice / theta_i_.size()]));
 }
 
+RglBrdf::NodeWarp RglBrdf::node_warp(size_t slice, const Vec2d& u) const {
+  const Vec3d wc = incidence(slice);
+  const double phi_c = phi_i_[slice / theta_i_.size()];
+  const double params[2] = {phi_c, theta_i_[slice % theta_i_.size()]};
+  const auto [u_m, pdf] = vndf_.sample(u, params);
+  const Vec3d m = spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()) + (isotropic_ ? phi_c : 0.0));
+  const Vec3d wx = reflect(wc, m).normalized();
+  // |dωx/du|: Dupuy & Jakob 2018 §5 (Mitsuba 3 `measured`): dωm = 2π² u_m,x sin θm du_m,
+  // dωx = 4 (ωc·m) dωm, du_m = pdf du.
+  const double jac = rgl::half_vector_jacobian(u_m.x()) * 4 * wc.dot(m);
+  return {u_m, wc, wx, pdf > 0 && wx.z() > 0 ? jac / pdf : 0.0};
+}
 
-std::optional<std::pair<Vec3d, Vec3d>> RglBrdf::node_directions(size_t t, int y, int x) const {
-  const Vec3d wc = spherical_direction(double(theta_i_[t]), 0.0);
-  const double params[2] = {0.0, theta_i_[t]};
-  const Vec2d u_m = vndf_.sample(Vec2d(double(x) / (grid_ - 1), double(y) / (grid_ - 1)), params).first;
-  const Vec3d m = spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()));
-  const Vec3d wx = reflect(wc, m);
-  if (!(wx.z() > 0)) return std::nullopt;
-  return std::pair{wc, wx.normalized()};
+std::optional<std::pair<Vec3d, Vec3d>> RglBrdf::node_directions(size_t slice, int y, int x) const {
+  const NodeWarp n = node_warp(slice, Vec2d(double(x) / (grid_ - 1), double(y) / (grid_ - 1)));
+  if (!(n.wx.z() > 0)) return std::nullopt;
+  return std::pair{n.wc, n.wx};
+}
+
+std::vector<double> RglBrdf::azimuth_shares() const {
+  const size_t np = phi_i_.size();
+  if (np == 1) return {1.0};
+  // Trapezoid widths of the phi_i nodes over their range, one of `reduction_` copies of the circle.
+  std::vector<double> share(np);
+  for (size_t p = 0; p < np; ++p) {
+    const double lo = phi_i_[p == 0 ? 0 : p - 1], hi = phi_i_[p + 1 == np ? p : p + 1];
+    share[p] = 0.5 * (hi - lo) / (double(phi_i_.back()) - double(phi_i_.front())) / reduction_;
+  }
+  return share;
+}
+
+// The images of a stored pair under the file's azimuthal symmetry (the inverse of fold()): a half
+// turn for 1/2 of the azimuths, the mirrors about both axes for 1/4.
+std::vector<RglBrdf::Fold> RglBrdf::images() const {
+  if (reduction_ == 2) return {{1, 1}, {-1, -1}};
+  if (reduction_ == 4) return {{1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+  return {{1, 1}};
+}
+
+double RglBrdf::node_weight(size_t slice, int y, int x) const {
+  // The solid angle of wo over the node's cell [x ± ½, y ± ½] ∩ [0,1]² of the unit square, by a 4 × 4
+  // midpoint rule. (Trapezoid weights at the nodes would give the x = 0 column, h = n, no weight:
+  // the specular peak of glossy files would be lost.)
+  constexpr int kSub = 4;
+  const double du = 1.0 / (grid_ - 1);
+  const double x0 = std::max(0.0, (x - 0.5) * du), x1 = std::min(1.0, (x + 0.5) * du);
+  const double y0 = std::max(0.0, (y - 0.5) * du), y1 = std::min(1.0, (y + 0.5) * du);
+  double weight = 0;
+  for (int j = 0; j < kSub; ++j)
+    for (int i = 0; i < kSub; ++i)
+      weight += node_warp(slice, Vec2d(x0 + (i + 0.5) / kSub * (x1 - x0), y0 + (j + 0.5) / kSub * (y1 - y0))).weight;
+  return weight * (x1 - x0) * (y1 - y0) / (kSub * kSub);
 }
 
 SampleSet RglBrdf::samples() const {
   SampleSet s;
   const double du = 1.0 / (grid_ - 1);
-  constexpr int kSub = 4;  // sub-samples per cell side for the cell's solid angle
-  for (size_t t = 0; t < theta_i_.size(); ++t) {
+  const std::vector<double> share = azimuth_shares();
+  const std::vector<Fold> copies = images();
+  for (size_t slice = 0; slice < slices(); ++slice) {
     // A θi node on the horizon has no incident light: skip it.
-    if (std::cos(double(theta_i_[t])) < 1e-6) continue;
-    const Vec3d wc = spherical_direction(double(theta_i_[t]), 0.0);
-    const double params[2] = {0.0, theta_i_[t]};
-    const double sigma_c = sigma_.eval(Vec2d(theta2u(theta_i_[t]), phi2u(0.0)));
-    // Where the warp sends a unit-square point, and |dωx/du| there: Dupuy & Jakob 2018 §5
-    // (Mitsuba 3 `measured`): dωm = 2π² u_m,x sin θm du_m, dωx = 4 (ωc·m) dωm, du_m = pdf du.
-    auto warp = [&](const Vec2d& u) {
-      const auto [u_m, pdf] = vndf_.sample(u, params);
-      const double theta_m = u2theta(u_m.x());
-      const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()));
-      const Vec3d wx = reflect(wc, m).normalized();
-      const double jac = rgl::half_vector_jacobian(u_m.x()) * 4 * wc.dot(m);
-      return std::tuple{u_m, wx, pdf > 0 && wx.z() > 0 ? jac / pdf : 0.0};
-    };
+    if (std::cos(double(theta_i_[slice % theta_i_.size()])) < 1e-6) continue;
+    const double sigma_c = sigma(incidence(slice));
     for (int y = 0; y < grid_; ++y)
       for (int x = 0; x < grid_; ++x) {
-        const auto [u_m, wx, unused] = warp(Vec2d(x * du, y * du));
-        if (!(wx.z() > 0)) continue;
-        // Weight: the solid angle of wo over the node's cell [x ± ½, y ± ½] ∩ [0,1]² of the unit
-        // square, by a 4 × 4 midpoint rule. (Trapezoid weights at the nodes would give the x = 0
-        // column, h = n, no weight: the specular peak of glossy files would be lost.)
-        const double x0 = std::max(0.0, (x - 0.5) * du), x1 = std::min(1.0, (x + 0.5) * du);
-        const double y0 = std::max(0.0, (y - 0.5) * du), y1 = std::min(1.0, (y + 0.5) * du);
-        double weight = 0;
-        for (int j = 0; j < kSub; ++j)
-          for (int i = 0; i < kSub; ++i)
-            weight += std::get<2>(warp(Vec2d(x0 + (i + 0.5) / kSub * (x1 - x0), y0 + (j + 0.5) / kSub * (y1 - y0))));
-        weight *= (x1 - x0) * (y1 - y0) / (kSub * kSub);
-        Rgb v = rgb_node(t, y, x);
-        if (jacobian_) v *= ndf_.eval(u_m) / (4 * sigma_c * wx.z());
-        else v /= wx.z();
-        s.push_back(wc, wx, v, weight, true);
+        const NodeWarp n = node_warp(slice, Vec2d(x * du, y * du));
+        if (!(n.wx.z() > 0)) continue;
+        const double weight = node_weight(slice, y, x) * share[slice / theta_i_.size()];
+        Rgb v = rgb_node(slice, y, x);
+        if (jacobian_) v *= ndf_.eval(n.u_m) / (4 * sigma_c * n.wx.z());
+        else v /= n.wx.z();
+        for (const Fold& f : copies) s.push_back(f(n.wc), f(n.wx), v, weight, true);
       }
   }
   return s;
 }
 
-Rgb RglBrdf::albedo(const Vec3d& wi, int n) const {
+Rgb RglBrdf::albedo(const Vec3d& wi_in, int n) const {
   Rgb sum = Rgb::Zero();
-  if (!(wi.z() > 0) || n < 1) return sum;
+  if (!(wi_in.z() > 0) || n < 1) return sum;
+  const Vec3d wi = fold(wi_in)(wi_in);  // the albedo is the same at every image of wi
   const double theta_c = elevation(wi), phi_c = std::atan2(wi.y(), wi.x());
   const double params[2] = {phi_c, theta_c};
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const auto [u_m, pdf] = vndf_.sample(Vec2d((i + 0.5) / n, (j + 0.5) / n), params);
       if (!(pdf > 0)) continue;
-      const double theta_m = u2theta(u_m.x());
-      const Vec3d m = spherical_direction(theta_m, u2phi(u_m.y()) + phi_c);
+      const Vec3d m = spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()) + (isotropic_ ? phi_c : 0.0));
       const Vec3d wo = reflect(wi, m).normalized();
       if (!(wo.z() > 0)) continue;
       const auto rho = eval(wi, wo);
       if (!rho) continue;
-      // |dωo/du_m| as in samples(); dividing by the warp's pdf makes this a quadrature in u.
+      // |dωo/du_m| as in node_warp(); dividing by the warp's pdf makes this a quadrature in u.
       const double jac = rgl::half_vector_jacobian(u_m.x()) * 4 * wi.dot(m);
       sum += *rho * wo.z() * jac / pdf;
     }

@@ -6,6 +6,12 @@
 // Roles of the two directions: the tables are conditioned on one direction ωc (their theta_i/phi_i
 // axes). brdfkit's eval(wi, wo) takes ωc = wi, the illumination direction (DESIGN.md §7), and
 // ωx = wo. The data are not exactly reciprocal, so eval(wi, wo) ≠ eval(wo, wi) in general.
+//
+// Incidence azimuths (Mitsuba 3 `measured`): a file with one or two phi_i entries is isotropic;
+// with more, every table is conditioned on (φi, θi), half vectors keep their absolute azimuth, and
+// a file may hold 1/2 of the incidence azimuths (ρ unchanged by a half turn of both directions) or
+// 1/4 (also by mirrors about the x and y axes); a look-up folds the pair into the stored range.
+// Tables are indexed by slice = p · theta_i().size() + t for phi_i node p and theta_i node t.
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -30,12 +36,15 @@ class RglBrdf final : public MeasuredBrdf {
   std::string dimensions() const override;
   // ρ(wi, wo) in sr⁻¹ with ωc = wi; raw table values (may be < 0 where the file holds noise).
   std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const override;
-  // The table nodes: for each theta_i node and each node of the rgb grid, the direction pair the
-  // VNDF warp maps it to (nodes whose wo falls below the horizon are skipped; the θi node on the
-  // horizon too), its raw value, and weight = solid angle of wo the node stands for within its θi
-  // slice: ∫ |dωo/du| over the node's cell (node ± ½ spacing) of the warp's unit square, so the
-  // weights of a slice sum to 2π and Σ weight·ρ·cosθo ≈ that slice's albedo.
+  // The table nodes: for each slice and each node of the rgb grid, the direction pair the VNDF warp
+  // maps it to (nodes whose wo falls below the horizon are skipped; the θi node on the horizon
+  // too), its raw value, and weight = solid angle of wo the node stands for within its slice
+  // (∫ |dωo/du| over the node's cell, node ± ½ spacing, of the warp's unit square) times the
+  // slice's share of the incidence azimuths, so that the weights of one θi sum to 2π and
+  // Σ weight·ρ·cosθo ≈ the azimuthal mean of the albedo. A file holding 1/2 or 1/4 of the azimuths
+  // gives every node once per image under its symmetry.
   SampleSet samples() const override;
+  bool isotropic() const override { return isotropic_; }
 
   // out[k] = eval(wi, wo[k]) for every k, the same values by the same operations, with what
   // depends on wi alone (its angles, its θi interpolation weights, σ(wi)) computed once: the
@@ -58,28 +67,51 @@ class RglBrdf final : public MeasuredBrdf {
   bool spectral() const { return spectral_; }                  // converted from `spectra`
   bool jacobian() const { return jacobian_; }
   const std::vector<float>& theta_i() const { return theta_i_; }
-  int grid_size() const { return grid_; }  // rgb grid is grid × grid per theta_i node
-  // Raw table node values at theta_i node t, grid row y, column x (rgb after spectral conversion;
-  // the file's `luminance` table).
-  Rgb rgb_node(size_t t, int y, int x) const;
-  double luminance_node(size_t t, int y, int x) const;
+  const std::vector<float>& phi_i() const { return phi_i_; }
+  int reduction() const { return reduction_; }  // copies of the stored azimuth range in the circle
+  size_t slices() const { return phi_i_.size() * theta_i_.size(); }
+  Vec3d incidence(size_t slice) const;      // ωc of a slice's nodes
+  int grid_size() const { return grid_; }  // rgb grid is grid × grid per slice
+  // Raw table node values at a slice, grid row y, column x (rgb after spectral conversion; the
+  // file's `luminance` table).
+  Rgb rgb_node(size_t slice, int y, int x) const;
+  double luminance_node(size_t slice, int y, int x) const;
   // The file's microfacet tables through the reader's interpolants: D(m) and the projected area
   // σ(ω) = ∫ D(m) max(0, ω·m) dωm that divides every value.
   double ndf(const Vec3d& m) const;
   double sigma(const Vec3d& w) const;
   // The direction pair of a node (nullopt where wo is below the horizon), as samples() uses.
-  std::optional<std::pair<Vec3d, Vec3d>> node_directions(size_t t, int y, int x) const;
+  std::optional<std::pair<Vec3d, Vec3d>> node_directions(size_t slice, int y, int x) const;
 
  private:
+  // Sign flips of x and y that take a pair into the stored azimuths (identity for a full circle).
+  struct Fold {
+    double sx = 1, sy = 1;
+    Vec3d operator()(const Vec3d& v) const { return Vec3d(sx * v.x(), sy * v.y(), v.z()); }
+  };
+  Fold fold(const Vec3d& wc) const;
+  std::vector<Fold> images() const;
+  std::vector<double> azimuth_shares() const;  // per phi_i node, summing to 1/reduction
+  // Where the VNDF warp of a slice sends a point u of the unit square: the half vector's
+  // coordinates, the pair, and |dωx/du| (0 below the horizon).
+  struct NodeWarp {
+    Vec2d u_m;
+    Vec3d wc, wx;
+    double weight;
+  };
+  NodeWarp node_warp(size_t slice, const Vec2d& u) const;
+  double node_weight(size_t slice, int y, int x) const;
+
   std::string path_, description_;
-  bool spectral_ = false, jacobian_ = true;
+  bool spectral_ = false, jacobian_ = true, isotropic_ = true;
+  int reduction_ = 1;
   size_t negative_values_ = 0;
   int grid_ = 0;
-  std::vector<float> theta_i_;
+  std::vector<float> theta_i_, phi_i_;
   MarginalWarp2D ndf_, sigma_, vndf_, luminance_;
   std::array<MarginalWarp2D, 3> rgb_;           // one interpolant per channel (bilinear, no CDF)
-  std::array<std::vector<float>, 3> rgb_raw_;   // [theta_i][y][x] per channel
-  std::vector<float> luminance_raw_;            // [theta_i][y][x]
+  std::array<std::vector<float>, 3> rgb_raw_;   // [slice][y][x] per channel
+  std::vector<float> luminance_raw_;            // [slice][y][x]
 };
 
 // Reads an RGL tensor_file BRDF (see RglBrdf); for measured/load.cpp.

@@ -29,29 +29,59 @@ using rgl::u2theta;
 
 // The horizon node is evaluated just above it: ρ(wi, ·) of a source is 0 or undefined at θi = 90°.
 constexpr double kMaxEvalTheta = 89.5 * kPi / 180;
-constexpr int kAzimuthSteps = 256;  // φm midpoints of the σ quadrature (max(0, ω·m) has a kink in φm)
+constexpr int kAzimuthSteps = 256;  // at least as many φm midpoints in the σ quadrature (max(0, ω·m) has a kink in φm)
 using Rule = boost::math::quadrature::gauss<double, 4>;
 
 // linear-sRGB luminance (IEC 61966-2-1's Y row), the `luminance` table the reader cross-checks.
 double luminance(const Rgb& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
 
-// A table over u = sqrt(2θ/π) ∈ [0, 1] at n uniform nodes, linear between them (as the reader's
-// bilinear NDF and σ interpolants along a row).
-struct UTable {
-  std::vector<double> v;
-  double at(double u) const {
-    const double x = std::clamp(u, 0.0, 1.0) * double(v.size() - 1);
-    const size_t j = std::min(size_t(x), v.size() - 2);
-    return v[j] + (x - double(j)) * (v[j + 1] - v[j]);
+// D or σ over the half-vector (or direction) unit square: `cols` nodes in u = sqrt(2θ/π), `rows`
+// nodes in v = (φ + π)/2π, bilinear between them as the reader's NDF and σ interpolants. An
+// isotropic table has two equal rows.
+struct AngleTable {
+  int cols = 0, rows = 2;
+  bool isotropic = true;
+  std::vector<double> v;  // [row][col]
+  double& node(int row, int col) { return v[size_t(row) * size_t(cols) + size_t(col)]; }
+  double at(double u, double w) const {
+    auto cell = [](double x, int n) {
+      const double t = std::clamp(x, 0.0, 1.0) * double(n - 1);
+      const int j = std::min(int(t), n - 2);
+      return std::pair{j, t - j};
+    };
+    const auto [c, fc] = cell(u, cols);
+    const auto [r, fr] = cell(w, rows);
+    auto node = [&](int rr, int cc) { return v[size_t(rr) * size_t(cols) + size_t(cc)]; };
+    return (1 - fr) * ((1 - fc) * node(r, c) + fc * node(r, c + 1)) + fr * ((1 - fc) * node(r + 1, c) + fc * node(r + 1, c + 1));
   }
+  // The direction of node (row, col); an isotropic table's rows are both asked at φ = 0.
+  Vec3d direction(int row, int col) const {
+    return spherical_direction(u2theta(double(col) / (cols - 1)), isotropic ? 0.0 : u2phi(double(row) / (rows - 1)));
+  }
+  // Sets every node to f(direction): once per column in an isotropic table.
+  template <class F> void fill(F f) {
+    tbb::parallel_for(0, isotropic ? 1 : rows, [&](int row) {
+      for (int col = 0; col < cols; ++col) node(row, col) = f(direction(row, col));
+    });
+    if (isotropic) std::copy(v.begin(), v.begin() + cols, v.begin() + cols);
+  }
+  std::vector<float> as_floats() const { return std::vector<float>(v.begin(), v.end()); }
 };
 
+AngleTable empty_table(const RglWriteOptions& opt) {
+  const bool isotropic = opt.phi_i == 1;
+  const int rows = isotropic ? 2 : opt.ndf_azimuths;
+  return AngleTable{opt.ndf_nodes, rows, isotropic, std::vector<double>(size_t(rows) * size_t(opt.ndf_nodes))};
+}
+
 // Quadrature points over the hemisphere of half vectors in (u, φ): Gauss in u on every table cell,
-// midpoints in φ; weight = |dωm/du dv| du dv.
+// midpoints in φ, as many in every φ cell of the table (exact for its bilinear D); weight =
+// |dωm/du dv| du dv.
 struct HalfVectorRule {
   std::vector<Vec3d> m;
-  std::vector<double> u, weight;
-  explicit HalfVectorRule(int n) {
+  std::vector<double> u, v, weight;
+  HalfVectorRule(int n, int rows) {
+    const int cells = rows - 1, steps = cells * ((kAzimuthSteps + cells - 1) / cells);
     const auto& xs = Rule::abscissa();
     const auto& ws = Rule::weights();
     for (int j = 0; j + 1 < n; ++j)
@@ -59,57 +89,57 @@ struct HalfVectorRule {
         for (int side : {-1, 1}) {
           if (xs[i] == 0 && side > 0) continue;
           const double uu = (j + 0.5 + 0.5 * side * xs[i]) / (n - 1), wu = 0.5 * ws[i] / (n - 1);
-          for (int k = 0; k < kAzimuthSteps; ++k) {
-            const double v = (k + 0.5) / kAzimuthSteps;
-            m.push_back(spherical_direction(u2theta(uu), u2phi(v)));
+          for (int k = 0; k < steps; ++k) {
+            const double vv = (k + 0.5) / steps;
+            m.push_back(spherical_direction(u2theta(uu), u2phi(vv)));
             u.push_back(uu);
-            weight.push_back(wu * half_vector_jacobian(uu) / kAzimuthSteps);
+            v.push_back(vv);
+            weight.push_back(wu * half_vector_jacobian(uu) / steps);
           }
         }
   }
 };
 
 // D normalized to ∫ D cosθ dω = 1 over the rule.
-void normalize(UTable& d, const HalfVectorRule& rule) {
+void normalize(AngleTable& d, const HalfVectorRule& rule) {
   double mass = 0;
-  for (size_t p = 0; p < rule.m.size(); ++p) mass += d.at(rule.u[p]) * rule.m[p].z() * rule.weight[p];
+  for (size_t p = 0; p < rule.m.size(); ++p) mass += d.at(rule.u[p], rule.v[p]) * rule.m[p].z() * rule.weight[p];
   if (!(mass > 0)) throw InputError("rgl writer", "the retro-reflection is nowhere positive: no distribution to build");
   for (double& x : d.v) x /= mass;
 }
 
-// σ(ω) = ∫ D(m) max(0, ω·m) dωm at the table's node directions (φ = 0).
-UTable projected_areas(const UTable& d, const HalfVectorRule& rule) {
-  const size_t n = d.v.size();
+// σ(ω) = ∫ D(m) max(0, ω·m) dωm at the table's node directions.
+AngleTable projected_areas(const AngleTable& d, const HalfVectorRule& rule) {
   std::vector<double> dw(rule.m.size());
-  for (size_t p = 0; p < dw.size(); ++p) dw[p] = d.at(rule.u[p]) * rule.weight[p];
-  UTable sigma{std::vector<double>(n)};
-  tbb::parallel_for(size_t(0), n, [&](size_t k) {
-    const Vec3d w = spherical_direction(u2theta(double(k) / double(n - 1)), 0.0);
+  for (size_t p = 0; p < dw.size(); ++p) dw[p] = d.at(rule.u[p], rule.v[p]) * rule.weight[p];
+  AngleTable sigma = d;
+  sigma.fill([&](const Vec3d& w) {
     double s = 0;
     for (size_t p = 0; p < dw.size(); ++p) s += std::max(0.0, w.dot(rule.m[p])) * dw[p];
-    sigma.v[k] = s;
+    return s;
   });
   return sigma;
 }
 
 // Dupuy et al. 2015 ("Extracting microfacet-based BRDF parameters from arbitrary materials with
 // power iterations"): D ∝ ρ(ω, ω) σ(ω)², starting from σ = 1.
-UTable power_iteration_ndf(const RglSource& rho, const RglWriteOptions& opt, const HalfVectorRule& rule) {
-  const int n = opt.ndf_nodes;
-  std::vector<double> retro(static_cast<size_t>(n));
-  for (int k = 0; k < n; ++k) {
-    const Vec3d w = spherical_direction(std::min(u2theta(double(k) / (n - 1)), kMaxEvalTheta), 0.0);
+AngleTable power_iteration_ndf(const RglSource& rho, const RglWriteOptions& opt, const HalfVectorRule& rule) {
+  AngleTable retro = empty_table(opt);
+  retro.fill([&](const Vec3d& node) {
+    const double theta = rgl::elevation(node);
+    const Vec3d w = spherical_direction(std::min(theta, kMaxEvalTheta), std::atan2(node.y(), node.x()));
     const auto v = rho(w, w);
     const double y = v ? luminance(*v) : 0.0;
     if (!std::isfinite(y))
-      throw InputError("rgl writer", fmt::format("non-finite value at the retro-reflection θ = {:.2f}°", u2theta(double(k) / (n - 1)) * 180 / kPi));
-    retro[size_t(k)] = std::max(0.0, y);
-  }
-  UTable d{retro};
+      throw InputError("rgl writer", fmt::format("non-finite value at the retro-reflection θ = {:.2f}°, φ = {:.2f}°", theta * 180 / kPi,
+                                                 std::atan2(w.y(), w.x()) * 180 / kPi));
+    return std::max(0.0, y);
+  });
+  AngleTable d = retro;
   normalize(d, rule);
   for (int it = 0; it < opt.power_iterations; ++it) {
-    const UTable sigma = projected_areas(d, rule);
-    for (int k = 0; k < n; ++k) d.v[size_t(k)] = retro[size_t(k)] * sigma.v[size_t(k)] * sigma.v[size_t(k)];
+    const AngleTable sigma = projected_areas(d, rule);
+    for (size_t k = 0; k < d.v.size(); ++k) d.v[k] = retro.v[k] * sigma.v[k] * sigma.v[k];
     normalize(d, rule);
   }
   return d;
@@ -135,14 +165,6 @@ Eigen::MatrixXd rgb_to_spectrum(const std::vector<double>& wl) {
   return pinv_mt * (m * pinv_mt).inverse();
 }
 
-// Both φ rows of an isotropic table.
-std::vector<float> two_rows(const UTable& t) {
-  std::vector<float> out;
-  for (int row = 0; row < 2; ++row)
-    for (double x : t.v) out.push_back(float(x));
-  return out;
-}
-
 void check(const RglWriteOptions& o) {
   auto in = [](int x, int lo, int hi) { return x >= lo && x <= hi; };
   if (!in(o.theta_i, 2, 91)) throw InputError("rgl writer", "theta_i nodes must be in [2, 91]");
@@ -150,28 +172,48 @@ void check(const RglWriteOptions& o) {
   if (!in(o.ndf_nodes, 8, 4096)) throw InputError("rgl writer", "ndf nodes must be in [8, 4096]");
   if (!in(o.vndf_nodes, 8, 1024)) throw InputError("rgl writer", "vndf nodes must be in [8, 1024]");
   if (!in(o.power_iterations, 0, 20)) throw InputError("rgl writer", "power iterations must be in [0, 20]");
+  if (!in(o.phi_i, 1, 360) || o.phi_i == 2) throw InputError("rgl writer", "phi_i nodes must be 1 (isotropic) or in [3, 360]");
+  if (o.symmetry != 1 && o.symmetry != 2 && o.symmetry != 4) throw InputError("rgl writer", "symmetry must be 1, 2 or 4");
+  if (!in(o.ndf_azimuths, 3, 1024)) throw InputError("rgl writer", "ndf azimuths must be in [3, 1024]");
 }
 
-// Incidence nodes uniform in cosθi, as Dupuy & Jakob's measured files roughly are: dense towards
-// the horizon, where ρ changes fastest with the incidence.
-std::vector<float> incidence_nodes(int nt) {
-  std::vector<float> theta_i(static_cast<size_t>(nt));
-  for (int t = 0; t < nt; ++t) theta_i[size_t(t)] = float(std::acos(1.0 - double(t) / (nt - 1)));
-  return theta_i;
-}
+// The incidence nodes (φi, θi), slice = p · θi count + t as the reader indexes them. θi uniform in
+// cosθi, as Dupuy & Jakob's measured files roughly are: dense towards the horizon, where ρ changes
+// fastest with the incidence. φi uniform over the stored copy of the circle.
+struct Incidence {
+  std::vector<float> theta_i, phi_i;
+  bool isotropic;
+  explicit Incidence(const RglWriteOptions& o) : isotropic(o.phi_i == 1) {
+    for (int t = 0; t < o.theta_i; ++t) theta_i.push_back(float(std::acos(1.0 - double(t) / (o.theta_i - 1))));
+    if (isotropic) phi_i = {0.0f};
+    for (int p = 0; !isotropic && p < o.phi_i; ++p)
+      phi_i.push_back(float(-kPi + 2 * kPi / o.symmetry * double(p) / (o.phi_i - 1)));
+    // Each node's own direction must fold to itself (measured/rgl_tensor.h): float(−π) lies below
+    // −π, where sin φi > 0 would send it half a turn away; the last node of a half circle is −0,
+    // whose sign bit keeps it where it is.
+    if (!isotropic) phi_i.front() = std::nextafter(phi_i.front(), 0.0f);
+    if (!isotropic && o.symmetry == 2) phi_i.back() = -0.0f;
+  }
+  size_t slices() const { return theta_i.size() * phi_i.size(); }
+  double theta(size_t slice) const { return theta_i[slice % theta_i.size()]; }
+  double phi(size_t slice) const { return phi_i[slice / theta_i.size()]; }
+  // The half vector of the unit-square point u_m: its azimuth relative to φi in an isotropic file.
+  Vec3d half_vector(size_t slice, const Vec2d& u_m) const {
+    return spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()) + (isotropic ? phi(slice) : 0.0));
+  }
+};
 
 // The VNDF D(m) max(0, ωi·m) |dωm/du| of each incidence node on the half vector's unit square
 // (x: u_θ, y: u_φ), nv × nv per node.
-std::vector<float> vndf_table(const UTable& ndf, const std::vector<float>& theta_i, int nv) {
-  std::vector<float> vndf(theta_i.size() * size_t(nv) * size_t(nv));
-  tbb::parallel_for(size_t(0), theta_i.size(), [&](size_t t) {
-    const Vec3d wi = spherical_direction(double(theta_i[t]), 0.0);
+std::vector<float> vndf_table(const AngleTable& ndf, const Incidence& inc, int nv) {
+  std::vector<float> vndf(inc.slices() * size_t(nv) * size_t(nv));
+  tbb::parallel_for(size_t(0), inc.slices(), [&](size_t s) {
+    const Vec3d wi = spherical_direction(inc.theta(s), inc.phi(s));
     for (int y = 0; y < nv; ++y)
       for (int x = 0; x < nv; ++x) {
-        const double ux = double(x) / (nv - 1), uy = double(y) / (nv - 1);
-        const Vec3d m = spherical_direction(u2theta(ux), u2phi(uy));
-        vndf[(t * size_t(nv) + size_t(y)) * size_t(nv) + size_t(x)] =
-            float(ndf.at(ux) * std::max(0.0, wi.dot(m)) * half_vector_jacobian(ux));
+        const Vec2d u(double(x) / (nv - 1), double(y) / (nv - 1));
+        vndf[(s * size_t(nv) + size_t(y)) * size_t(nv) + size_t(x)] =
+            float(ndf.at(u.x(), u.y()) * std::max(0.0, wi.dot(inc.half_vector(s, u))) * half_vector_jacobian(u.x()));
       }
   });
   return vndf;
@@ -183,23 +225,23 @@ struct Interpolants {
 };
 
 struct ColourGrid {
-  std::vector<float> rgb, luminance;  // [θi][3][y][x], [θi][y][x]
-  std::vector<std::uint8_t> valid;    // [y][x]: measured and above the horizon at every θi
+  std::vector<float> rgb, luminance;  // [slice][3][y][x], [slice][y][x]
+  std::vector<std::uint8_t> valid;    // [y][x]: measured and above the horizon at every slice
 };
 
-ColourGrid colour_grid(const RglSource& rho, const Interpolants& in, const std::vector<float>& theta_i, int g) {
-  const size_t nt = theta_i.size(), cells = size_t(g) * size_t(g);
-  ColourGrid out{std::vector<float>(nt * 3 * cells), std::vector<float>(nt * cells), {}};
-  std::vector<std::uint8_t> measured(nt * cells, 1);
-  tbb::parallel_for(size_t(0), nt, [&](size_t t) {
-    const double th = theta_i[t], params[2] = {0.0, th};
-    const Vec3d wi = spherical_direction(th, 0.0), wi_eval = spherical_direction(std::min(th, kMaxEvalTheta), 0.0);
-    const double sigma_i = in.sigma.eval(Vec2d(theta2u(th), phi2u(0.0)));
+ColourGrid colour_grid(const RglSource& rho, const Interpolants& in, const Incidence& inc, int g) {
+  const size_t ns = inc.slices(), cells = size_t(g) * size_t(g);
+  ColourGrid out{std::vector<float>(ns * 3 * cells), std::vector<float>(ns * cells), {}};
+  std::vector<std::uint8_t> measured(ns * cells, 1);
+  tbb::parallel_for(size_t(0), ns, [&](size_t s) {
+    const double th = inc.theta(s), ph = inc.phi(s), params[2] = {ph, th};
+    const Vec3d wi = spherical_direction(th, ph), wi_eval = spherical_direction(std::min(th, kMaxEvalTheta), ph);
+    const double sigma_i = in.sigma.eval(Vec2d(theta2u(th), phi2u(ph)));
     for (int y = 0; y < g; ++y)
       for (int x = 0; x < g; ++x) {
         const size_t cell = size_t(y) * size_t(g) + size_t(x);
         const Vec2d u_m = in.vndf.sample(Vec2d(double(x) / (g - 1), double(y) / (g - 1)), params).first;
-        const Vec3d wo = reflect(wi, spherical_direction(u2theta(u_m.x()), u2phi(u_m.y()))).normalized();
+        const Vec3d wo = reflect(wi, inc.half_vector(s, u_m)).normalized();
         const double d = in.ndf.eval(u_m);
         // The table holds ρ cosθo (times 4σ/D), which vanishes linearly at the horizon. A node whose
         // wo falls below it holds that quantity continued oddly (ρ of the mirror direction above
@@ -208,13 +250,13 @@ ColourGrid colour_grid(const RglSource& rho, const Interpolants& in, const std::
         // within a cell of the horizon came out up to 100 times too large.
         const Vec3d above(wo.x(), wo.y(), std::abs(wo.z()));
         const std::optional<Rgb> v = d > 0 ? rho(wi_eval, above) : std::nullopt;
-        if (!(wo.z() > 0) || !v) measured[t * cells + cell] = 0;
+        if (!(wo.z() > 0) || !v) measured[s * cells + cell] = 0;
         if (v && !v->allFinite())
-          throw InputError("rgl writer", fmt::format("non-finite value at θi = {:.2f}°, wo = ({:.4f}, {:.4f}, {:.4f})",
-                                                     th * 180 / kPi, above.x(), above.y(), above.z()));
+          throw InputError("rgl writer", fmt::format("non-finite value at θi = {:.2f}°, φi = {:.2f}°, wo = ({:.4f}, {:.4f}, {:.4f})",
+                                                     th * 180 / kPi, ph * 180 / kPi, above.x(), above.y(), above.z()));
         const Rgb value = v ? Rgb(*v * (4 * sigma_i * wo.z() / d)) : Rgb::Zero();
-        for (size_t c = 0; c < 3; ++c) out.rgb[(t * 3 + c) * cells + cell] = float(value[Eigen::Index(c)]);
-        out.luminance[t * cells + cell] = float(std::max(0.0, luminance(value)));  // a sampling density: ≥ 0
+        for (size_t c = 0; c < 3; ++c) out.rgb[(s * 3 + c) * cells + cell] = float(value[Eigen::Index(c)]);
+        out.luminance[s * cells + cell] = float(std::max(0.0, luminance(value)));  // a sampling density: ≥ 0
       }
   });
   out.valid.assign(cells, 1);
@@ -241,31 +283,31 @@ std::vector<float> spectra_of(const std::vector<float>& rgb, size_t nt, size_t c
 
 void write_rgl(const std::filesystem::path& file, const RglSource& rho, const RglWriteOptions& opt) {
   check(opt);
-  const HalfVectorRule rule(opt.ndf_nodes);
-  const UTable ndf = power_iteration_ndf(rho, opt, rule);
-  const UTable sigma = projected_areas(ndf, rule);
-  const std::vector<float> theta_i = incidence_nodes(opt.theta_i);
-  const std::vector<float> vndf = vndf_table(ndf, theta_i, opt.vndf_nodes);
-  const std::vector<float> ndf_rows = two_rows(ndf), sigma_rows = two_rows(sigma);
-  const Interpolants in{MarginalWarp2D(ndf_rows.data(), opt.ndf_nodes, 2, {}, false),
-                        MarginalWarp2D(sigma_rows.data(), opt.ndf_nodes, 2, {}, false),
-                        MarginalWarp2D(vndf.data(), opt.vndf_nodes, opt.vndf_nodes, {{0.0f}, theta_i}, true)};
-  const ColourGrid grid = colour_grid(rho, in, theta_i, opt.grid);
+  const HalfVectorRule rule(opt.ndf_nodes, empty_table(opt).rows);
+  const AngleTable ndf = power_iteration_ndf(rho, opt, rule);
+  const AngleTable sigma = projected_areas(ndf, rule);
+  const Incidence inc(opt);
+  const std::vector<float> vndf = vndf_table(ndf, inc, opt.vndf_nodes);
+  const std::vector<float> ndf_f = ndf.as_floats(), sigma_f = sigma.as_floats();
+  const Interpolants in{MarginalWarp2D(ndf_f.data(), ndf.cols, ndf.rows, {}, false),
+                        MarginalWarp2D(sigma_f.data(), sigma.cols, sigma.rows, {}, false),
+                        MarginalWarp2D(vndf.data(), opt.vndf_nodes, opt.vndf_nodes, {inc.phi_i, inc.theta_i}, true)};
+  const ColourGrid grid = colour_grid(rho, in, inc, opt.grid);
   const std::vector<double> wl = spectrum_wavelengths();
-  const std::uint64_t nt = theta_i.size(), nv = std::uint64_t(opt.vndf_nodes), g = std::uint64_t(opt.grid),
-                      nn = std::uint64_t(opt.ndf_nodes), nl = wl.size();
+  const std::uint64_t np = inc.phi_i.size(), nt = inc.theta_i.size(), nv = std::uint64_t(opt.vndf_nodes),
+                      g = std::uint64_t(opt.grid), rows = std::uint64_t(ndf.rows), cols = std::uint64_t(ndf.cols), nl = wl.size();
 
   TensorFileWriter w;
   w.add_text("description", opt.description);
-  w.add_f32("phi_i", {1}, {0.0f});
-  w.add_f32("theta_i", {nt}, theta_i);
-  w.add_f32("sigma", {2, nn}, sigma_rows);
-  w.add_f32("ndf", {2, nn}, ndf_rows);
-  w.add_f32("vndf", {1, nt, nv, nv}, vndf);
-  w.add_f32("luminance", {1, nt, g, g}, grid.luminance);
-  if (opt.rgb_table) w.add_f32("rgb", {1, nt, 3, g, g}, grid.rgb);
+  w.add_f32("phi_i", {np}, inc.phi_i);
+  w.add_f32("theta_i", {nt}, inc.theta_i);
+  w.add_f32("sigma", {rows, cols}, sigma_f);
+  w.add_f32("ndf", {rows, cols}, ndf_f);
+  w.add_f32("vndf", {np, nt, nv, nv}, vndf);
+  w.add_f32("luminance", {np, nt, g, g}, grid.luminance);
+  if (opt.rgb_table) w.add_f32("rgb", {np, nt, 3, g, g}, grid.rgb);
   w.add_f32("wavelengths", {nl}, std::vector<float>(wl.begin(), wl.end()));
-  w.add_f32("spectra", {1, nt, nl, g, g}, spectra_of(grid.rgb, nt, g * g, wl));
+  w.add_f32("spectra", {np, nt, nl, g, g}, spectra_of(grid.rgb, np * nt, g * g, wl));
   w.add_u8("jacobian", {1}, {1});
   w.add_u8("valid", {g * g}, grid.valid);
   write_file_atomically(file, w.bytes());

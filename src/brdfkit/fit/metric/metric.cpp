@@ -29,14 +29,15 @@ std::vector<std::string> metric_ids() { return metric_registry().names(); }
 
 namespace {
 
-// The domain a definition gives on these data: the data's own samples (scattered formats), a MERL
+// The domain a definition gives on these data: the data's own samples (scattered formats, and
+// anisotropic tables, which a grid with wi at φ = 0 would see in one azimuth only), a MERL
 // table's cells, or the paper's grid with the measured value looked up (kept, or built on demand
 // for grids too large to keep). Returns Σ w over the domain, in chunk order.
 double build_domain(const MetricDefinition& def, const MeasuredBrdf& data, const MetricOptions& opt,
                     std::vector<MetricChunk>& chunks, bool& on_samples, bool& on_cells) {
   const merl::Table* cells = data.merl_cells();
   const auto sample_density = def.sample_density ? def.sample_density : def.cells.density;
-  if (!cells && sample_density && is_scattered(data)) {
+  if (!cells && sample_density && (!data.isotropic() || is_scattered(data))) {
     SampleDomain samples = build_sample_domain(data.samples(), sample_density, def.grid.cos_i_factor);
     chunks = std::move(samples.chunks);
     on_samples = true;
