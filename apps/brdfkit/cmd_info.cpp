@@ -109,11 +109,12 @@ void print_summary(const MeasuredSummary& s) {
     std::cout << "  albedo: not available (the data answer rho(wi, wo) on too small a set to integrate)\n";
     return;
   }
-  std::cout << fmt::format("  directional albedo ({}):\n",
+  std::cout << fmt::format("  directional albedo ({}){}:\n",
                            s.albedo_method == "eval"
                                ? "half-vector Gauss-Legendre quadrature of the data; missing = share of the "
                                  "cosine-weighted hemisphere not measured"
-                               : "from the file's own samples");
+                               : "from the file's own samples",
+                           s.isotropic ? "" : ", anisotropic data: wi at phi_i = 0");
   std::cout << fmt::format("  {:>8}{:>9}{:>9}{:>9}{:>9}{:>9}\n", "theta_i", "R", "G", "B", "Y", "missing");
   for (const AlbedoRow& r : s.albedo) {
     if (!r.albedo) {

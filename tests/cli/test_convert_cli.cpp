@@ -100,6 +100,9 @@ TEST(ConvertCli, AnisotropicModelToRgl) {
   EXPECT_EQ(c.err, "");
   const RglBrdf back(dir / "aniso.bsdf");
   EXPECT_EQ(back.reduction(), 2);
+  const auto info = run_cli("info " + q(dir / "aniso.bsdf"));
+  EXPECT_NE(info.out.find("13 phi_i (anisotropic, 1/2 of the azimuths) x 9 theta_i"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("anisotropic data: wi at phi_i = 0"), std::string::npos) << info.out;
   const Model& m = model_by_name("cook-torrance-ggx-aniso");
   const double p[6] = {0.1, 0.9, 0.15, 0.3, 0.7, 0.5};
   double worst = 0;

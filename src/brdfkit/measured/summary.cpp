@@ -81,6 +81,7 @@ MeasuredSummary summarize(const MeasuredBrdf& brdf, const AlbedoQuadrature& q) {
   s.path = brdf.path();
   s.format = brdf.format();
   s.dimensions = brdf.dimensions();
+  s.isotropic = brdf.isotropic();
   fill_counts_and_stats(brdf, s);
 
   for (int deg = 0; deg <= 80; deg += 10) s.albedo.push_back({deg * kDeg, std::nullopt});
@@ -123,6 +124,7 @@ nlohmann::json summary_json(const MeasuredSummary& s) {
   j["path"] = s.path;
   j["format"] = s.format;
   j["dimensions"] = s.dimensions;
+  j["isotropic"] = s.isotropic;
   j["total"] = s.total;
   j["valid"] = s.valid;
   j["valid_fraction"] = s.total ? double(s.valid) / double(s.total) : 0.0;

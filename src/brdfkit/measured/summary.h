@@ -29,6 +29,7 @@ struct AlbedoRow {
 
 struct MeasuredSummary {
   std::string path, format, dimensions;
+  bool isotropic = true;  // MeasuredBrdf::isotropic(): the albedo rows are then at φi = 0
   size_t total = 0;  // cells (tabulated formats) or samples
   size_t valid = 0;  // measured ones
   std::array<ChannelStats, 3> channels{};

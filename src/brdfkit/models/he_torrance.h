@@ -34,11 +34,13 @@
 #include <cmath>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/fresnel/conductor.h"
 #include "brdfkit/models/he_effective_roughness.h"
 #include "brdfkit/models/he_series.h"
+#include "brdfkit/models/he_series_table.h"
 #include "brdfkit/models/he_shadowing.h"
 #include "brdfkit/core/param.h"
 
@@ -70,6 +72,14 @@ struct HeTorrance {
 
   static double wavelength_um(int c) { return kChannelWavelengthUm[c < 0 || c > 2 ? 1 : c]; }
 
+  // Eq. 78's series: doubles at the default tolerance from its table (he_series_table.h, within
+  // that tolerance), Jets, statistics and tighter tolerances summed (he_series.h).
+  template <class T> static T series(const T& g, const T& c, double tolerance, HeSeriesStats* stats) {
+    if constexpr (std::is_same_v<T, double>)
+      if (!stats && tolerance >= HeSeriesTable::kRelativeError) return HeSeriesTable::get()(g, c);
+    return he_series(g, c, tolerance, stats);
+  }
+
   // The directional-diffuse term alone, without ks (He 1991 Eq. 75).
   template <class T>
   static T directional_diffuse(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, HeSeriesStats* stats = nullptr,
@@ -86,12 +96,13 @@ struct HeTorrance {
     const T& vz = v.z();
     const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));  // bisector angle
     const T geometry = (vv / vz) * (vv / vz);                                // Eq. 76 (unpolarized)
-    const T shadow = he_shadowing(wi.z(), sigma0, tau) * he_shadowing(wo.z(), sigma0, tau);  // Eq. 23
-    const T sigma = he_effective_roughness(wi.z(), wo.z(), sigma0, tau);                     // Eq. 80
+    const HeSlope<T> slope_i(wi.z(), sigma0, tau), slope_o(wo.z(), sigma0, tau);
+    const T shadow = slope_i.shadowing() * slope_o.shadowing();                                   // Eq. 23
+    const T sigma = he_effective_roughness_of(slope_i.k_factor() + slope_o.k_factor(), sigma0);  // Eq. 80
     const T kg = T(k) * sigma * vz;
     const T g = kg * kg;                                              // Eq. 79
     const T c_exp = T(0.25 * k * k) * tau * tau * vxy2;               // τ² v_xy²/4, v_xy = k |v_xy|
-    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * he_series(g, c_exp, series_tolerance, stats);  // Eq. 78
+    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * series(g, c_exp, series_tolerance, stats);  // Eq. 78
     return fresnel * geometry * shadow * dist / (T(kPi) * wi.z() * wo.z());  // Eq. 75
   }
 

@@ -1,0 +1,73 @@
+#include "brdfkit/models/he_series_table.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "brdfkit/models/he_series.h"
+
+namespace brdfkit {
+
+namespace {
+
+constexpr double kGMin = 2, kGMax = 1e4, kYMax = 100;  // c/g ≤ kYMax
+constexpr double kStepX = 0.04, kStepY = 0.015;
+constexpr double kNodeTolerance = 1e-10;
+// One column below g = kGMin and two nodes beyond the top of each axis, so that a look-up inside the
+// domain has its 4 × 4 nodes; at y = 0 (the first row) a look-up in the first cell takes the cubic
+// through the rows 0 … 3.
+const double kX0 = std::log(kGMin) - kStepX;
+
+// Weights of the cubic Lagrange interpolant through the nodes at −1, 0, 1, 2, at t ∈ [0, 1].
+void lagrange4(double t, double w[4]) {
+  w[0] = -t * (t - 1) * (t - 2) / 6;
+  w[1] = (t + 1) * (t - 1) * (t - 2) / 2;
+  w[2] = -(t + 1) * t * (t - 2) / 2;
+  w[3] = (t + 1) * t * (t - 1) / 6;
+}
+
+}  // namespace
+
+const HeSeriesTable& HeSeriesTable::get() {
+  static const HeSeriesTable table;
+  return table;
+}
+
+HeSeriesTable::HeSeriesTable()
+    : nx_(int(std::ceil((std::log(kGMax) - kX0) / kStepX)) + 3), ny_(int(std::ceil(std::log1p(kYMax) / kStepY)) + 3) {
+  r_.resize(size_t(nx_) * size_t(ny_));
+  // Isolated: the first look-up may come from inside a parallel loop, and this thread must not
+  // take one of that loop's tasks (which would wait on this very initialization).
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(0, ny_, [&](int j) {
+      const double y = std::expm1(j * kStepY);
+      for (int i = 0; i < nx_; ++i) {
+        const double g = std::exp(kX0 + i * kStepX), c = g * y;
+        r_[size_t(j) * size_t(nx_) + size_t(i)] = std::log(he_series(g, c, kNodeTolerance)) + std::log(g) + y;
+      }
+    });
+  });
+}
+
+bool HeSeriesTable::covers(double g, double c) const { return g >= kGMin && g <= kGMax && c >= 0 && c <= kYMax * g; }
+
+double HeSeriesTable::operator()(double g, double c) const {
+  if (!covers(g, c)) return he_series(g, c, kRelativeError);
+  const double y = c / g;
+  const double fx = (std::log(g) - kX0) / kStepX, fy = std::log1p(y) / kStepY;
+  const int i = std::clamp(int(fx), 1, nx_ - 3), j = std::clamp(int(fy), 1, ny_ - 3);
+  double wx[4], wy[4];
+  lagrange4(fx - i, wx);
+  lagrange4(fy - j, wy);
+  double r = 0;
+  for (int b = 0; b < 4; ++b) {
+    double row = 0;
+    for (int a = 0; a < 4; ++a) row += wx[a] * node(i - 1 + a, j - 1 + b);
+    r += wy[b] * row;
+  }
+  return std::exp(r - y) / g;
+}
+
+}  // namespace brdfkit

@@ -1,0 +1,39 @@
+#pragma once
+// He et al. 1991's Eq. 78 series S(g, c) = Σ_{m≥1} e^{−g} gᵐ/(m!·m) e^{−c/m} (he_series.h) from a
+// table, for the doubles of model evaluation: the series needs ~10 √g terms (one exp each: 62 on
+// average over a 2° grid at colodur_napoli's He fit, 78 % of that fit's time), the table one exp.
+//
+// S depends on nothing but (g, c), so one table serves every parameter set and channel. It holds
+//   r(x, y) = log S + log g + c/g,   x = log g,  y = log(1 + c/g),
+// (S ≈ e^{−c/g}/g for large g: r is what is left, smooth), at steps 0.04 in x and 0.015 in y over
+// 2 ≤ g ≤ 10⁴ (the fitter's box reaches g ≈ 3200) and c/g ≤ 100, each node summed to 10⁻¹⁰; a
+// look-up is the tensor-product cubic Lagrange interpolant of the 4 × 4 nodes around (x, y).
+// Worst relative error against the series over the table's domain: 3.0e-7, largest near g = 2
+// (tests/models/he/test_he_series_table.cpp), inside the 1e-6 to which the series itself is summed.
+// Outside the domain (smaller g: few terms, cheap; larger g or c/g: rare) it sums the series.
+#include <cstddef>
+#include <vector>
+
+namespace brdfkit {
+
+class HeSeriesTable {
+ public:
+  // The relative error the table keeps to (the series' own truncation, HeTorrance::kSeriesTolerance).
+  static constexpr double kRelativeError = 1e-6;
+  // Built on first use (≈ 0.2 s, in parallel; a function-local static, so thread-safe).
+  static const HeSeriesTable& get();
+
+  // S(g, c): from the table inside its domain, else the series summed to kRelativeError.
+  double operator()(double g, double c) const;
+  // Whether (g, c) is read from the table.
+  bool covers(double g, double c) const;
+
+ private:
+  HeSeriesTable();
+  double node(int i, int j) const { return r_[size_t(j) * size_t(nx_) + size_t(i)]; }
+
+  int nx_ = 0, ny_ = 0;
+  std::vector<double> r_;  // [y][x]
+};
+
+}  // namespace brdfkit
