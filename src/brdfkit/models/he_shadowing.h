@@ -48,6 +48,17 @@ template <class T> struct HeSlope {
   T k_factor() const { return kind == Kind::Oblique ? tan_theta * erfc_a : T(0); }
 };
 
+// What the model takes of one direction's slope: its shadowing S(θ) and its K(θ).
+template <class T> struct HeSlopeTerms {
+  T shadowing{}, k_factor{};
+  HeSlopeTerms() = default;
+  HeSlopeTerms(const T& cos_theta, const T& sigma0, const T& tau) {
+    const HeSlope<T> s(cos_theta, sigma0, tau);
+    shadowing = s.shadowing();
+    k_factor = s.k_factor();
+  }
+};
+
 template <class T> T he_shadowing(const T& cos_theta, const T& sigma0, const T& tau) {
   return HeSlope<T>(cos_theta, sigma0, tau).shadowing();
 }

@@ -2,12 +2,33 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 #include "brdfkit/core/warp.h"
 #include "brdfkit/models/lobe_mixture.h"
 #include "brdfkit/ndf/beckmann.h"
 
 namespace brdfkit {
+
+void HeTorrance::eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
+                            const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                            double* out) {
+  double cached_cos = std::numeric_limits<double>::quiet_NaN();  // equal to no cosine
+  HeSlopeTerms<double> slope_i;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3d wi(wi_x[k], wi_y[k], wi_z[k]), wo(wo_x[k], wo_y[k], wo_z[k]);
+    if (!(wi.z() > 0 && wo.z() > 0)) {
+      out[k] = 0;
+      continue;
+    }
+    if (!(wi.z() == cached_cos)) {
+      slope_i = HeSlopeTerms<double>(wi.z(), p[kSigma0], p[kTau]);
+      cached_cos = wi.z();
+    }
+    const HeSlopeTerms<double> slope_o(wo.z(), p[kSigma0], p[kTau]);
+    out[k] = p[kKd] * kInvPi + p[kKs] * directional_diffuse_with(p, c, wi, wo, slope_i, slope_o);
+  }
+}
 
 double HeTorrance::specular_reflectance(const double* p, int c, double cos_i) {
   if (!(cos_i > 0)) return 0.0;

@@ -32,6 +32,7 @@
 // Sampling: kd cosine-weighted, or a Beckmann half-vector lobe (`lobe_alpha`) reflected about
 // wo, mixed by kd and an estimate of the directional-diffuse albedo.
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string_view>
 #include <type_traits>
@@ -84,8 +85,17 @@ struct HeTorrance {
   template <class T>
   static T directional_diffuse(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, HeSeriesStats* stats = nullptr,
                                double series_tolerance = kSeriesTolerance) {
-    using std::sqrt;
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
+    const HeSlopeTerms<T> slope_i(wi.z(), p[kSigma0], p[kTau]), slope_o(wo.z(), p[kSigma0], p[kTau]);
+    return directional_diffuse_with(p, c, wi, wo, slope_i, slope_o, stats, series_tolerance);
+  }
+
+  // The same with the slope terms of wi and wo given (both directions above the horizon).
+  template <class T>
+  static T directional_diffuse_with(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo,
+                                    const HeSlopeTerms<T>& slope_i, const HeSlopeTerms<T>& slope_o,
+                                    HeSeriesStats* stats = nullptr, double series_tolerance = kSeriesTolerance) {
+    using std::sqrt;
     const T& sigma0 = p[kSigma0];
     const T& tau = p[kTau];
     const double lambda = wavelength_um(c);
@@ -96,9 +106,8 @@ struct HeTorrance {
     const T& vz = v.z();
     const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));  // bisector angle
     const T geometry = (vv / vz) * (vv / vz);                                // Eq. 76 (unpolarized)
-    const HeSlope<T> slope_i(wi.z(), sigma0, tau), slope_o(wo.z(), sigma0, tau);
-    const T shadow = slope_i.shadowing() * slope_o.shadowing();                                   // Eq. 23
-    const T sigma = he_effective_roughness_of(slope_i.k_factor() + slope_o.k_factor(), sigma0);  // Eq. 80
+    const T shadow = slope_i.shadowing * slope_o.shadowing;                                   // Eq. 23
+    const T sigma = he_effective_roughness_of(slope_i.k_factor + slope_o.k_factor, sigma0);  // Eq. 80
     const T kg = T(k) * sigma * vz;
     const T g = kg * kg;                                              // Eq. 79
     const T c_exp = T(0.25 * k * k) * tau * tau * vxy2;               // τ² v_xy²/4, v_xy = k |v_xy|
@@ -110,6 +119,12 @@ struct HeTorrance {
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
     return p[kKd] * T(kInvPi) + p[kKs] * directional_diffuse(p, c, wi, wo);
   }
+
+  // eval for n pairs. A metric's grid holds one incidence per chunk (fit/metric/metric_grid.h), so
+  // wi's slope terms (an erfc and an exp) are kept while wi.z repeats: the same values as eval's.
+  static void eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
+                         const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                         double* out);
 
   // Weight ks |F(θi)|² e^{−g} S(θi)² of the specular spike at incidence cosθi (He 1991 Eq. 74,
   // with θr = θi): the directional reflectance the delta adds to ∫ ρ cosθr dωr.

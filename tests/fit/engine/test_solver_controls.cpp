@@ -40,28 +40,34 @@ ceres::IterationSummary step(int iteration, double cost, bool successful = true)
   return s;
 }
 
-// Stops after kWindow successful steps that together lowered the cost by < kRelative of it;
-// failed steps (the trust region shrinking) do not count, and a fit still improving goes on.
-TEST(StallStop, StopsOnlyWhenTheWindowGainedLessThanItsShare) {
-  StallStop crawl;
-  EXPECT_EQ(crawl(step(0, 1.0)), ceres::SOLVER_CONTINUE);
-  int it = 1;
-  for (int k = 0; k < StallStop::kWindow; ++k) EXPECT_EQ(crawl(step(it++, 1.0 - 1e-6 * (k + 1))), ceres::SOLVER_CONTINUE);
-  for (int k = 0; k < 20; ++k) EXPECT_EQ(crawl(step(it++, 0.5, false)), ceres::SOLVER_CONTINUE);  // failed steps
-  EXPECT_EQ(crawl(step(it++, 1.0 - 6e-6)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
-  EXPECT_TRUE(crawl.stalled());
+// Stops after `window` successful steps that together lowered the cost by < `relative` of it,
+// under either rule; failed steps (the trust region shrinking) do not count, and a fit still
+// improving goes on.
+TEST(StallStop, StopsOnlyWhenAWindowGainedLessThanItsShare) {
+  for (const StallRule* rule : {&kCrawl, &kSettled}) {
+    // Per step half the rule's share: the crawl's 1e-5 a step is twice the settled rule's share
+    // (5e-6), so each case stops by its own rule.
+    const double gain = 0.5 * rule->relative / rule->window;
+    StallStop crawl;
+    EXPECT_EQ(crawl(step(0, 1.0)), ceres::SOLVER_CONTINUE);
+    int it = 1;
+    for (int k = 0; k < rule->window; ++k) EXPECT_EQ(crawl(step(it++, 1.0 - gain * (k + 1))), ceres::SOLVER_CONTINUE);
+    for (int k = 0; k < 20; ++k) EXPECT_EQ(crawl(step(it++, 0.5, false)), ceres::SOLVER_CONTINUE);  // failed steps
+    EXPECT_EQ(crawl(step(it++, 1.0 - gain * (rule->window + 1))), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+    EXPECT_EQ(crawl.stalled(), rule);
+  }
 
-  StallStop improving;  // 1e-3 relative per step: 5e-3 per window, 50× the threshold
+  StallStop improving;  // 1e-3 relative per step: ≥ 10× either threshold
   double cost = 1.0;
   for (int i = 1; i < 200; ++i) {
     cost *= 1 - 1e-3;
     ASSERT_EQ(improving(step(i, cost)), ceres::SOLVER_CONTINUE) << i;
   }
-  EXPECT_FALSE(improving.stalled());
+  EXPECT_EQ(improving.stalled(), nullptr);
 
-  StallStop edge;  // a window that gains just more than kRelative goes on
+  StallStop edge;  // a crawl that gains just more than the crawl rule's share goes on
   cost = 1.0;
-  const double per_step = 1.5 * StallStop::kRelative / StallStop::kWindow;
+  const double per_step = 1.5 * kCrawl.relative / kCrawl.window;
   for (int i = 1; i < 50; ++i) {
     cost *= 1 - per_step;
     ASSERT_EQ(edge(step(i, cost)), ceres::SOLVER_CONTINUE) << i;

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/fit/metric/metric_store.h"
 #include "brdfkit/models/lambert.h"
 #include "support/fit_test_util.h"
 
@@ -133,6 +134,35 @@ TEST(Metric, HpRmseMatchesItsSum) {
   for (int i = 0; i <= 80; i += 4) si += std::pow(std::cos(i * kDeg), 2) * 4 * kDeg;
   const double expected = p.d * std::sqrt(si * so * 360 * kDeg);
   EXPECT_NEAR(make_metric("hp-rmse", data, {4}).value(p.model, p.fitted), expected, expected * 1e-12);
+}
+
+// A metric only reported (MetricOptions::keep = false) looks its grid up again at each value():
+// the kept metric's number to the last bit, nothing kept, the same refusal of an empty domain,
+// and a store entry of its own (a fit under the kept one must not get it).
+TEST(Metric, AGridNotKeptGivesTheKeptValue) {
+  const Model& ggx = model_by_name("cook-torrance-ggx");
+  const ParamValues truth =
+      make_values(ggx, {{"kd", Rgb(0.1, 0.2, 0.3)}, {"ks", Rgb(0.8, 0.6, 0.5)}, {"alpha", Rgb::Constant(0.2)}});
+  const ParamValues other =
+      make_values(ggx, {{"kd", Rgb(0.12, 0.2, 0.25)}, {"ks", Rgb(0.7, 0.6, 0.6)}, {"alpha", Rgb::Constant(0.25)}});
+  const AnalyticMeasured data(ggx, truth);
+  MetricOptions kept{2}, dropped{2};
+  dropped.keep = false;
+  for (const char* id : {"ngan", "bagher", "low-e1", "low-e2"}) {
+    const Metric a = make_metric(id, data, kept), b = make_metric(id, data, dropped);
+    EXPECT_TRUE(a.cached()) << id;
+    EXPECT_FALSE(b.cached()) << id;
+    EXPECT_EQ(a.value(ggx, other), b.value(ggx, other)) << id;
+    EXPECT_GT(a.value(ggx, other), 0.0) << id;
+  }
+  MetricStore store(data);
+  EXPECT_NE(store.metric("bagher", kept), store.metric("bagher", dropped));
+  EXPECT_EQ(store.metric("bagher", dropped), store.metric("bagher", dropped));
+  EXPECT_TRUE(store.metric("bagher", kept)->cached());
+  const MerlBrdf empty(merl::Table(), "empty.binary");
+  dropped.coarsen = 4;
+  dropped.domain = MetricDomain::Grid;  // the grid, looked up in a table without a cell
+  EXPECT_THROW(make_metric("ngan", empty, dropped), MetricUndefined);
 }
 
 TEST(Metric, UnknownIdAndEmptyDomainAreInputErrors) {

@@ -287,7 +287,9 @@ class Batch {
     mat.store = std::make_unique<MetricStore>(*mat.data);
     for (const std::string& id : report_) {
       try {
-        mat.metrics[id] = mat.store->metric(id, MetricOptions{opt_.fit.coarsen});
+        MetricOptions o{opt_.fit.coarsen};
+        o.keep = id == metric_;  // the others are evaluated once per fit
+        mat.metrics[id] = mat.store->metric(id, o);
       } catch (const InputError& e) {  // MetricUndefined and grids a coarsening cannot make
         mat.undefined[id] = e.what();
       }

@@ -90,7 +90,7 @@ LevelOutcome solve_level(CachedObjective& objective, const SolverVariables& vars
   out.usable = summary.IsSolutionUsable();
   out.converged = summary.termination_type == ceres::CONVERGENCE || stall.stalled();
   out.message = stall.stalled() ? fmt::format("Stalled: the last {} steps lowered the cost by < {:g} relative.",
-                                              StallStop::kWindow, StallStop::kRelative)
+                                              stall.stalled()->window, stall.stalled()->relative)
                                 : summary.message;
   return out;
 }

@@ -29,34 +29,61 @@ std::vector<std::string> metric_ids() { return metric_registry().names(); }
 
 namespace {
 
+struct DomainTotals {
+  double weight_sum = 0;  // Σ w over the domain, in chunk order
+  size_t samples = 0;
+};
+
+size_t sample_total(const std::vector<MetricChunk>& chunks) {
+  size_t n = 0;
+  for (const MetricChunk& ch : chunks) n += ch.size();
+  return n;
+}
+
+// The paper's grid with the measured value looked up, node by node: kept in `chunks`, or (not
+// `keep`) looked up only for the totals here and again by each value().
+DomainTotals grid_domain(const GridSpec& grid, const MeasuredBrdf& data, bool keep, std::vector<MetricChunk>& chunks) {
+  const size_t n = grid.theta_i.size();
+  std::vector<double> weight(n, 0.0);
+  std::vector<size_t> samples(n, 0);
+  if (keep) chunks.resize(n);
+  tbb::parallel_for(size_t(0), n, [&](size_t i) {
+    ScratchLease<MetricChunk> scratch;
+    MetricChunk& ch = keep ? chunks[i] : *scratch;
+    build_chunk(grid, i, data, ch);
+    for (double s : ch.sqrt_weight) weight[i] += s * s;
+    samples[i] = ch.size();
+  });
+  DomainTotals t;
+  for (size_t i = 0; i < n; ++i) {
+    t.weight_sum += weight[i];
+    t.samples += samples[i];
+  }
+  return t;
+}
+
 // The domain a definition gives on these data: the data's own samples (scattered formats, and
 // anisotropic tables, which a grid with wi at φ = 0 would see in one azimuth only), a MERL
-// table's cells, or the paper's grid with the measured value looked up (kept, or built on demand
-// for grids too large to keep). Returns Σ w over the domain, in chunk order.
-double build_domain(const MetricDefinition& def, const MeasuredBrdf& data, const MetricOptions& opt,
-                    std::vector<MetricChunk>& chunks, bool& on_samples, bool& on_cells) {
+// table's cells, or the paper's grid (kept where the definition and the options allow; built on
+// demand otherwise).
+DomainTotals build_domain(const MetricDefinition& def, const MeasuredBrdf& data, const MetricOptions& opt,
+                          std::vector<MetricChunk>& chunks, bool& on_samples, bool& on_cells) {
   const merl::Table* cells = data.merl_cells();
   const auto sample_density = def.sample_density ? def.sample_density : def.cells.density;
   if (!cells && sample_density && (!data.isotropic() || is_scattered(data))) {
     SampleDomain samples = build_sample_domain(data.samples(), sample_density, def.grid.cos_i_factor);
     chunks = std::move(samples.chunks);
     on_samples = true;
-    return samples.measure_sum;
+    return {samples.measure_sum, sample_total(chunks)};
   }
   if (cells && def.cells.density && opt.domain == MetricDomain::Auto) {
     CellDomain domain = build_cell_domain(*cells, def.cells, opt.coarsen);
     chunks = std::move(domain.chunks);
     on_cells = true;
-    return domain.measure_sum;
+    return {domain.measure_sum, sample_total(chunks)};
   }
-  double wsum = 0;
-  if (def.cache) {
-    chunks.resize(def.grid.theta_i.size());
-    tbb::parallel_for(size_t(0), chunks.size(), [&](size_t i) { chunks[i] = build_chunk(def.grid, i, data); });
-    for (const MetricChunk& ch : chunks)
-      for (double s : ch.sqrt_weight) wsum += s * s;
-  }
-  return wsum;
+  if (!def.cache) return {};
+  return grid_domain(def.grid, data, opt.keep, chunks);
 }
 
 }  // namespace
@@ -71,12 +98,12 @@ Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricO
   m.transform_ = def.transform;
   m.sqrt_ = def.sqrt;
   m.data_ = &data;
-  const double wsum = build_domain(def, data, opt, m.chunks_, m.on_samples_, m.on_cells_);
+  const DomainTotals totals = build_domain(def, data, opt, m.chunks_, m.on_samples_, m.on_cells_);
   m.folded_ = m.on_cells_ && def.cells.fold;
-  if ((def.cache || m.on_samples_) && m.sample_count() == 0)
+  if ((def.cache || m.on_samples_) && totals.samples == 0)
     throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
   double scale2 = def.channel_pool;
-  if (def.divide_by_weight_sum) scale2 /= wsum;
+  if (def.divide_by_weight_sum) scale2 /= totals.weight_sum;
   if (def.divide_by_max_albedo) {
     m.albedo_norm_ = max_albedo(opt.coarsen);
     if (!(m.albedo_norm_ > 0) || !std::isfinite(m.albedo_norm_))
@@ -104,11 +131,7 @@ void Metric::check_model(const Model& model) const {
                          "' on a MERL table's cells assumes reciprocity (use the grid domain)");
 }
 
-size_t Metric::sample_count() const {
-  size_t n = 0;
-  for (const MetricChunk& ch : chunks_) n += ch.size();
-  return n;
-}
+size_t Metric::sample_count() const { return sample_total(chunks_); }
 
 double Metric::finish(double sum_sq) const { return sqrt_ ? std::sqrt(sum_sq) : sum_sq; }
 

@@ -38,6 +38,10 @@ struct MetricOptions {
   // not the point (DESIGN.md §7 warns against fitting on coarser grids).
   int coarsen = 1;
   MetricDomain domain = MetricDomain::Auto;  // Auto: a MERL table's cells where the metric has them
+  // Keep a grid domain's looked-up samples (a fit evaluates them hundreds of times), or look them
+  // up again at every value(): a metric a batch only reports, once per fit, where keeping the
+  // grid of each material in flight would cost 25–130 MB per metric (bench/main_job.sh's RSS).
+  bool keep = true;
 };
 
 class Metric {

@@ -8,7 +8,7 @@ std::shared_ptr<const Metric> MetricStore::metric(std::string_view id, const Met
   std::shared_ptr<Entry> e;
   {
     const std::lock_guard lock(mu_);
-    auto& slot = metrics_[Key{std::string(id), opt.coarsen, int(opt.domain)}];
+    auto& slot = metrics_[Key{std::string(id), opt.coarsen, int(opt.domain), opt.keep}];
     if (!slot) slot = std::make_shared<Entry>();
     e = slot;
   }

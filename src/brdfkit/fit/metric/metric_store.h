@@ -32,7 +32,7 @@ class MetricStore {
   double max_albedo(int coarsen);
 
  private:
-  using Key = std::tuple<std::string, int, int>;  // metric id, coarsening, domain choice
+  using Key = std::tuple<std::string, int, int, bool>;  // metric id, coarsening, domain choice, keep
   struct Entry {
     std::once_flag built;
     std::shared_ptr<const Metric> metric;
