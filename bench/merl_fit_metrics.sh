@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# One fit on a full-size MERL file (#14 target 3): diffuse + Cook-Torrance/GGX tabulated from known
-# parameters, fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
+# One fit on a full-size MERL file: diffuse + Cook-Torrance/GGX tabulated from known parameters,
+# fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
 # Measured (2 cores, idle): ngan only 0.69 s wall, 1.13 s CPU, 185 MB; every metric 4.8 s wall,

@@ -10,24 +10,87 @@
 
 namespace brdfkit {
 
+namespace {
+
+// Calls pair(k, wi, wo, slope_i, slope_o) for the pairs above the horizon and below(k) for the
+// others, keeping wi's slope terms while wi.z repeats (a metric chunk holds one incidence).
+template <class Pair, class Below>
+void for_each_pair(const double* p, std::size_t n, const double* wi_x, const double* wi_y, const double* wi_z,
+                   const double* wo_x, const double* wo_y, const double* wo_z, Pair&& pair, Below&& below) {
+  double cached_cos = std::numeric_limits<double>::quiet_NaN();  // equal to no cosine
+  HeSlopeTerms<double> slope_i;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3d wi(wi_x[k], wi_y[k], wi_z[k]), wo(wo_x[k], wo_y[k], wo_z[k]);
+    if (!(wi.z() > 0 && wo.z() > 0)) {
+      below(k);
+      continue;
+    }
+    if (!(wi.z() == cached_cos)) {
+      slope_i = HeSlopeTerms<double>(wi.z(), p[HeTorrance::kSigma0], p[HeTorrance::kTau]);
+      cached_cos = wi.z();
+    }
+    pair(k, wi, wo, slope_i, HeSlopeTerms<double>(wo.z(), p[HeTorrance::kSigma0], p[HeTorrance::kTau]));
+  }
+}
+
+}  // namespace
+
 void HeTorrance::eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                             const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                             double* out) {
-  double cached_cos = std::numeric_limits<double>::quiet_NaN();  // equal to no cosine
-  HeSlopeTerms<double> slope_i;
+  for_each_pair(
+      p, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z,
+      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const HeSlopeTerms<double>& si,
+          const HeSlopeTerms<double>& so) {
+        out[k] = p[kKd] * kInvPi + p[kKs] * directional_diffuse_with(p, c, wi, wo, si, so);
+      },
+      [&](std::size_t k) { out[k] = 0; });
+}
+
+void HeTorrance::eval_batch_rgb(const double* const p[3], std::size_t n, const double* wi_x, const double* wi_y,
+                                const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                                double* const out[3]) {
+  for (int c = 1; c < 3; ++c)
+    if (!(p[c][kSigma0] == p[0][kSigma0] && p[c][kTau] == p[0][kTau])) {
+      for (int ch = 0; ch < 3; ++ch) eval_batch(p[ch], ch, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out[ch]);
+      return;
+    }
+  for_each_pair(
+      p[0], n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z,
+      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const HeSlopeTerms<double>& si,
+          const HeSlopeTerms<double>& so) {
+        const PairTerms<double> t = pair_terms(p[0], wi, wo, si, so);
+        for (int c = 0; c < 3; ++c)
+          out[c][k] = p[c][kKd] * kInvPi + p[c][kKs] * directional_diffuse_of(p[c], c, wi, wo, t);
+      },
+      [&](std::size_t k) {
+        for (int c = 0; c < 3; ++c) out[c][k] = 0;
+      });
+}
+
+bool HeTorrance::eval_batch_from(const double* p, const double* p0, const double* at_p0, int c, std::size_t n,
+                                 const double* wi_x, const double* wi_y, const double* wi_z, const double* wo_x,
+                                 const double* wo_y, const double* wo_z, double* out) {
+  for (int j : {kKd, kKs, kSigma0, kTau})
+    if (!(p[j] == p0[j])) return false;
+  const ConductorFresnel<double> fresnel(p + kEta), fresnel0(p0 + kEta);
+  const double diffuse = p[kKd] * kInvPi;
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3d wi(wi_x[k], wi_y[k], wi_z[k]), wo(wo_x[k], wo_y[k], wo_z[k]);
     if (!(wi.z() > 0 && wo.z() > 0)) {
       out[k] = 0;
       continue;
     }
-    if (!(wi.z() == cached_cos)) {
-      slope_i = HeSlopeTerms<double>(wi.z(), p[kSigma0], p[kTau]);
-      cached_cos = wi.z();
-    }
-    const HeSlopeTerms<double> slope_o(wo.z(), p[kSigma0], p[kTau]);
-    out[k] = p[kKd] * kInvPi + p[kKs] * directional_diffuse_with(p, c, wi, wo, slope_i, slope_o);
+    // The bisector cosine as directional_diffuse_of computes it.
+    const Vec3d v = wi + wo;
+    const double vv = (v.x() * v.x() + v.y() * v.y()) + v.z() * v.z();
+    const double cos_d = 0.5 * std::sqrt(vv);
+    const double f0 = fresnel0.eval(cos_d), dd0 = at_p0[k] - diffuse;
+    // dd0 carries the rounding of kd/π: where it is under 1e-3 of it, the ratio would magnify that.
+    out[k] = f0 > 0 && std::abs(dd0) >= 1e-3 * diffuse ? diffuse + dd0 * (fresnel.eval(cos_d) / f0)
+                                                        : diffuse + p[kKs] * directional_diffuse(p, c, wi, wo);
   }
+  return true;
 }
 
 double HeTorrance::specular_reflectance(const double* p, int c, double cos_i) {

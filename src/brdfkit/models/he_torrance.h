@@ -90,29 +90,47 @@ struct HeTorrance {
     return directional_diffuse_with(p, c, wi, wo, slope_i, slope_o, stats, series_tolerance);
   }
 
+  // What the directional-diffuse term of one pair takes from the shape alone: the same in every
+  // channel, so a batch over R, G and B computes it once per pair (eval_batch_rgb).
+  template <class T> struct PairTerms {
+    Vec3<T> v;  // k̂r − k̂i = wi + wo (k̂i = −wi): symmetric in (wi, wo)
+    T vxy2, vv, geometry, shadow, sigma;
+  };
+  template <class T>
+  static PairTerms<T> pair_terms(const T* p, const Vec3<T>& wi, const Vec3<T>& wo, const HeSlopeTerms<T>& slope_i,
+                                 const HeSlopeTerms<T>& slope_o) {
+    PairTerms<T> t;
+    t.v = wi + wo;
+    t.vxy2 = t.v.x() * t.v.x() + t.v.y() * t.v.y();
+    t.vv = t.vxy2 + t.v.z() * t.v.z();
+    t.geometry = (t.vv / t.v.z()) * (t.vv / t.v.z());                                 // Eq. 76 (unpolarized)
+    t.shadow = slope_i.shadowing * slope_o.shadowing;                                  // Eq. 23
+    t.sigma = he_effective_roughness_of(slope_i.k_factor + slope_o.k_factor, p[kSigma0]);  // Eq. 80
+    return t;
+  }
+
+  // The directional-diffuse term of channel c from the pair's shape terms.
+  template <class T>
+  static T directional_diffuse_of(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, const PairTerms<T>& t,
+                                  HeSeriesStats* stats = nullptr, double series_tolerance = kSeriesTolerance) {
+    using std::sqrt;
+    const T& tau = p[kTau];
+    const double lambda = wavelength_um(c);
+    const double k = 2 * kPi / lambda;
+    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(t.vv));  // bisector angle
+    const T kg = T(k) * t.sigma * t.v.z();
+    const T g = kg * kg;                                              // Eq. 79
+    const T c_exp = T(0.25 * k * k) * tau * tau * t.vxy2;             // τ² v_xy²/4, v_xy = k |v_xy|
+    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * series(g, c_exp, series_tolerance, stats);  // Eq. 78
+    return fresnel * t.geometry * t.shadow * dist / (T(kPi) * wi.z() * wo.z());  // Eq. 75
+  }
+
   // The same with the slope terms of wi and wo given (both directions above the horizon).
   template <class T>
   static T directional_diffuse_with(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo,
                                     const HeSlopeTerms<T>& slope_i, const HeSlopeTerms<T>& slope_o,
                                     HeSeriesStats* stats = nullptr, double series_tolerance = kSeriesTolerance) {
-    using std::sqrt;
-    const T& sigma0 = p[kSigma0];
-    const T& tau = p[kTau];
-    const double lambda = wavelength_um(c);
-    const double k = 2 * kPi / lambda;
-    const Vec3<T> v = wi + wo;  // k̂r − k̂i with k̂i = −wi: symmetric in (wi, wo)
-    const T vxy2 = v.x() * v.x() + v.y() * v.y();
-    const T vv = vxy2 + v.z() * v.z();
-    const T& vz = v.z();
-    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));  // bisector angle
-    const T geometry = (vv / vz) * (vv / vz);                                // Eq. 76 (unpolarized)
-    const T shadow = slope_i.shadowing * slope_o.shadowing;                                   // Eq. 23
-    const T sigma = he_effective_roughness_of(slope_i.k_factor + slope_o.k_factor, sigma0);  // Eq. 80
-    const T kg = T(k) * sigma * vz;
-    const T g = kg * kg;                                              // Eq. 79
-    const T c_exp = T(0.25 * k * k) * tau * tau * vxy2;               // τ² v_xy²/4, v_xy = k |v_xy|
-    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * series(g, c_exp, series_tolerance, stats);  // Eq. 78
-    return fresnel * geometry * shadow * dist / (T(kPi) * wi.z() * wo.z());  // Eq. 75
+    return directional_diffuse_of(p, c, wi, wo, pair_terms(p, wi, wo, slope_i, slope_o), stats, series_tolerance);
   }
 
   template <class T> static T eval(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo) {
@@ -125,6 +143,20 @@ struct HeTorrance {
   static void eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                          const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                          double* out);
+
+  // eval_batch for R, G and B (p[c]: channel c's parameters) with the pair's shape terms computed
+  // once for the three: the same values. Where σ0 or τ differ between the channels, three eval_batch.
+  static void eval_batch_rgb(const double* const p[3], std::size_t n, const double* wi_x, const double* wi_y,
+                             const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                             double* const out[3]);
+
+  // eval_batch at p from its values at_p0 at p0 where the two differ only in η and k: they enter
+  // only through the Fresnel factor of Eq. 75, so ρ(p) = kd/π + (ρ(p0) − kd/π) F_p / F_p0. A pair
+  // where F_p0 = 0, or where ρ(p0) − kd/π is too small beside kd/π to keep its digits, is evaluated
+  // in full. False where any other parameter differs.
+  static bool eval_batch_from(const double* p, const double* p0, const double* at_p0, int c, std::size_t n,
+                              const double* wi_x, const double* wi_y, const double* wi_z, const double* wo_x,
+                              const double* wo_y, const double* wo_z, double* out);
 
   // Weight ks |F(θi)|² e^{−g} S(θi)² of the specular spike at incidence cosθi (He 1991 Eq. 74,
   // with θr = θi): the directional reflectance the delta adds to ∫ ρ cosθr dωr.

@@ -11,6 +11,11 @@
 // not vectorize, e.g. terms that do not depend on the pair are hoisted out of it):
 //   static void eval_batch(const double* p, int c, size_t n, const double* wi_x, wi_y, wi_z,
 //                          wo_x, wo_y, wo_z, double* out);
+// and, where the three channels share costly terms (Model::eval_batch_rgb):
+//   static void eval_batch_rgb(const double* const p[3], size_t n, wi_x, …, wo_z, double* const out[3]);
+// and, for parameters that only scale a costly term by a cheap factor (Model::eval_batch_from):
+//   static bool eval_batch_from(const double* p, const double* p0, const double* at_p0, int c,
+//                               size_t n, wi_x, …, wo_z, double* out);
 // where p holds channel c's value of every parameter (ParamValues::channel). `eval` is one template
 // for doubles, SIMD-friendly loops and Ceres Jets (tests check the Jets against differences of
 // the doubles). ModelAdapter<M> turns such a type into the runtime Model the CLI, reports,
@@ -51,6 +56,21 @@ class Model {
     for (std::size_t k = 0; k < n; ++k)
       out[k] = eval(p, c, Vec3d(d.wi_x[k], d.wi_y[k], d.wi_z[k]), Vec3d(d.wo_x[k], d.wo_y[k], d.wo_z[k]));
   }
+  // out[c][k] = eval_batch(p[c], c, …)'s out[k] for the channels c = 0, 1, 2, the same values.
+  // This default makes the three calls; ModelAdapter<M> calls M's own where the channels share
+  // costly terms (He computes its slope and effective roughness once for the three).
+  virtual void eval_batch_rgb(const double* const p[3], std::size_t n, const SoaPairs& d, double* const out[3]) const {
+    for (int c = 0; c < 3; ++c) eval_batch(p[c], c, n, d, out[c]);
+  }
+  // out[k] = ρ at p from at_p0[k] = ρ at p0 (eval_batch's values for the same pairs), without
+  // the model's costly terms, where p differs from p0 only in parameters that scale such a term by
+  // a cheap factor (He's complex index, which enters through its Fresnel factor alone): what a
+  // finite difference in such a parameter costs. Equal to eval_batch to rounding. False, with
+  // nothing written, where the model has no such shortcut for these parameters.
+  virtual bool eval_batch_from(const double* /*p*/, const double* /*p0*/, const double* /*at_p0*/, int /*c*/,
+                               std::size_t /*n*/, const SoaPairs& /*d*/, double* /*out*/) const {
+    return false;
+  }
   // Draws wi given wo (u uniform in [0,1)², u_lobe uniform in [0,1) picks a lobe); nullopt when
   // the draw lands below the horizon (its probability mass is part of pdf's deficit).
   virtual std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u,
@@ -77,6 +97,19 @@ template <class M> class ModelAdapter : public Model {
         out[k] = M::template eval<double>(p, c, Vec3d(d.wi_x[k], d.wi_y[k], d.wi_z[k]),
                                           Vec3d(d.wo_x[k], d.wo_y[k], d.wo_z[k]));
     }
+  }
+  void eval_batch_rgb(const double* const p[3], std::size_t n, const SoaPairs& d, double* const out[3]) const override {
+    if constexpr (requires { M::eval_batch_rgb(p, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out); })
+      M::eval_batch_rgb(p, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out);
+    else
+      Model::eval_batch_rgb(p, n, d, out);
+  }
+  bool eval_batch_from(const double* p, const double* p0, const double* at_p0, int c, std::size_t n,
+                       const SoaPairs& d, double* out) const override {
+    if constexpr (requires { M::eval_batch_from(p, p0, at_p0, c, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out); })
+      return M::eval_batch_from(p, p0, at_p0, c, n, d.wi_x, d.wi_y, d.wi_z, d.wo_x, d.wo_y, d.wo_z, out);
+    else
+      return false;
   }
   std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
     return M::sample(p, c, wo, u, u_lobe);

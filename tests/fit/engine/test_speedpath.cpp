@@ -7,7 +7,8 @@
 //   - the cell domain's directions (fit/metric/metric_cells.cpp, sines and cosines once per axis) equal
 //     merl::cell_directions of every cell;
 //   - a fit through the paired pass gives the same parameters, to the bit, as one through two
-//     plain passes (fit/engine/projected_objective.cpp, its cache of bases included).
+//     plain passes (fit/engine/projected_objective.cpp, its cache of bases included);
+//   - a basis no variable moves is shared by the channels only where they agree on it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,6 +23,7 @@
 #include "brdfkit/fit/metric/metric_cells.h"
 #include "brdfkit/fit/metric/metric_definition.h"
 #include "brdfkit/fit/engine/fit_model.h"
+#include "brdfkit/fit/procedure/retabled_model.h"
 #include "brdfkit/measured/merl.h"
 #include "brdfkit/measured/merl_brdf.h"
 #include "brdfkit/models/cook_torrance_catalogue.h"
@@ -232,6 +234,35 @@ TEST(SpeedPath, FitThroughPairedPassIsBitIdentical) {
   std::printf("paired vs plain fit: bit-identical; worst relative error vs truth %.3g (%d iterations)\n", worst,
               fast.iterations);
   EXPECT_LT(worst, 1e-9);
+}
+
+// He with its shape and index held: no variable moves the ks basis, but it differs by channel (its
+// wavelength). The constant bases are computed once per stride, and a class is shared with class
+// 0 only where it equals it (Lambert's kd basis): the colours are recovered exactly.
+TEST(SpeedPath, HeWithItsShapeHeldKeepsItsChannelDependentBasisPerChannel) {
+  const Model& he = model_by_name("he");
+  ParamTable table = he.params();
+  for (const auto& [name, value] : {std::pair{"sigma0", 0.4}, std::pair{"tau", 2.5}, std::pair{"eta", 1.5},
+                                    std::pair{"k", 0.2}}) {
+    ParamSpec& s = table[size_t(find_param(table, name))];
+    s.lower = s.upper = s.def = value;
+  }
+  const fit::RetabledModel held(he, table);
+  const ParamValues truth = test::with(he, {{"kd", Rgb(0.12, 0.08, 0.05)},
+                                            {"ks", Rgb(0.9, 0.7, 0.6)},
+                                            {"sigma0", Rgb::Constant(0.4)},
+                                            {"tau", Rgb::Constant(2.5)},
+                                            {"eta", Rgb::Constant(1.5)},
+                                            {"k", Rgb::Constant(0.2)}});
+  const MerlBrdf data(test::tabulate_cells(he, truth, 3), "held-he.binary");
+  const fit::Metric metric = fit::make_metric("ngan", data, {3});
+  const fit::FitResult r = fit::fit_model(held, metric, {});
+  for (const char* name : {"kd", "ks"})
+    for (int c = 0; c < 3; ++c) {
+      const size_t p = size_t(find_param(he.params(), name));
+      const double want = truth.values[size_t(c)][p];
+      EXPECT_NEAR(r.values.values[size_t(c)][p], want, 1e-9 * want) << name << " channel " << c;
+    }
 }
 
 }  // namespace

@@ -1,8 +1,11 @@
 // HeTorrance::eval_batch keeps wi's slope terms (an erfc and an exp) while wi.z repeats, as it
 // does through a metric chunk (one incidence per chunk), and must give eval's values to the bit:
-// tables are tabulated through eval and fits run through eval_batch.
+// tables are tabulated through eval and fits run through eval_batch; so must eval_batch_rgb, which
+// computes the shape terms once for R, G and B. Its eval_batch_from, which fits use for
+// differences in η and k, must give eval_batch's values to rounding.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -37,18 +40,94 @@ TEST(HeEvalBatch, EqualsEvalToTheBitThroughRunsOfOneIncidence) {
     ParamValues values = ParamValues::defaults(m.params());
     values.set(m.params(), "sigma0", sigma0);
     values.set(m.params(), "tau", tau);
+    values.values[1][size_t(HeTorrance::kEta)] = 0.4;  // the channels differ in more than λ
+    values.values[2][size_t(HeTorrance::kK)] = 2.0;
+    std::vector<double> rgb[3] = {std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
+    const double* p_rgb[3] = {values.channel(0), values.channel(1), values.channel(2)};
+    double* out_rgb[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
+    m.eval_batch_rgb(p_rgb, n, d, out_rgb);
     for (int c = 0; c < 3; ++c) {
       std::vector<double> out(n);
       m.eval_batch(values.channel(c), c, n, d, out.data());
       for (size_t k = 0; k < n; ++k, ++compared) {
         const double want = m.eval(values.channel(c), c, Vec3d(v[0][k], v[1][k], v[2][k]), Vec3d(v[3][k], v[4][k], v[5][k]));
         ASSERT_EQ(out[k], want) << "sigma0 " << sigma0 << " channel " << c << " pair " << k;
+        ASSERT_EQ(rgb[c][k], want) << "eval_batch_rgb, sigma0 " << sigma0 << " channel " << c << " pair " << k;
         nonzero += want > 0;
       }
     }
   }
   EXPECT_EQ(compared, 3 * 3 * 680);
   EXPECT_GT(nonzero, compared / 3);  // most pairs above the horizon: the comparison is not of zeros
+}
+
+TEST(HeEvalBatch, RgbWithAShapePerChannelEqualsEvalToTheBit) {
+  const Model& m = model_by_name("he");
+  std::vector<double> v[6];
+  for (int k = 0; k < 60; ++k) {
+    const Vec3d wi = spherical_direction(0.02 * k, 0.0), wo = spherical_direction(1.5 - 0.02 * k, 0.1 * k);
+    for (int a = 0; a < 3; ++a) {
+      v[a].push_back(wi[a]);
+      v[3 + a].push_back(wo[a]);
+    }
+  }
+  const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
+  ParamValues values = ParamValues::defaults(m.params());
+  values.values[1][size_t(HeTorrance::kSigma0)] = 0.9;  // a fit with per-channel shapes
+  values.values[2][size_t(HeTorrance::kTau)] = 7.0;
+  std::vector<double> rgb[3] = {std::vector<double>(60), std::vector<double>(60), std::vector<double>(60)};
+  const double* p_rgb[3] = {values.channel(0), values.channel(1), values.channel(2)};
+  double* out_rgb[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
+  m.eval_batch_rgb(p_rgb, 60, d, out_rgb);
+  for (int c = 0; c < 3; ++c)
+    for (size_t k = 0; k < 60; ++k)
+      ASSERT_EQ(rgb[c][k], m.eval(values.channel(c), c, Vec3d(v[0][k], v[1][k], v[2][k]), Vec3d(v[3][k], v[4][k], v[5][k])))
+          << "channel " << c << " pair " << k;
+}
+
+TEST(HeEvalBatch, FromAnotherIndexEqualsEvalBatchToRoundingAndRefusesOtherChanges) {
+  const Model& m = model_by_name("he");
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> v[6];
+  for (int k = 0; k < 500; ++k) {
+    const Vec3d wi = spherical_direction(1.65 * u(rng), 0.0), wo = spherical_direction(1.65 * u(rng), 2 * kPi * u(rng));
+    for (int a = 0; a < 3; ++a) {
+      v[a].push_back(wi[a]);
+      v[3 + a].push_back(wo[a]);
+    }
+  }
+  const size_t n = v[0].size();
+  const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
+  ParamValues base = ParamValues::defaults(m.params());
+  base.set(m.params(), "sigma0", 0.53);
+  base.set(m.params(), "tau", 2.0);
+  base.set(m.params(), "kd", 0.3);
+  // η = 1, k = 0 reflects nothing (F = 0): those pairs are evaluated in full.
+  for (const auto& [eta0, k0] : {std::pair{1.5, 0.0}, std::pair{0.9, 0.3}, std::pair{1.0, 0.0}}) {
+    ParamValues from = base, to = base;
+    from.set(m.params(), "eta", eta0);
+    from.set(m.params(), "k", k0);
+    to.set(m.params(), "eta", 1.7);
+    to.set(m.params(), "k", 0.4);
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> at_from(n), want(n), got(n);
+      m.eval_batch(from.channel(c), c, n, d, at_from.data());
+      m.eval_batch(to.channel(c), c, n, d, want.data());
+      ASSERT_TRUE(m.eval_batch_from(to.channel(c), from.channel(c), at_from.data(), c, n, d, got.data()));
+      for (size_t k = 0; k < n; ++k)
+        ASSERT_NEAR(got[k], want[k], 1e-13 * std::abs(want[k])) << "eta0 " << eta0 << " channel " << c << " pair " << k;
+    }
+  }
+  // Any other parameter changed: the Fresnel ratio does not give it.
+  for (const char* name : {"kd", "ks", "sigma0", "tau"}) {
+    ParamValues to = base;
+    to.set(m.params(), name, 0.7);
+    std::vector<double> at_base(n), out(n, -1.0);
+    m.eval_batch(base.channel(0), 0, n, d, at_base.data());
+    EXPECT_FALSE(m.eval_batch_from(to.channel(0), base.channel(0), at_base.data(), 0, n, d, out.data())) << name;
+    EXPECT_EQ(out[0], -1.0) << name << ": nothing written";
+  }
 }
 
 }  // namespace

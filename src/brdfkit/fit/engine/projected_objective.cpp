@@ -68,6 +68,25 @@ void ProjectedObjective::eval_bases(const ParamValues& pv, int q, const SampleBl
   }
 }
 
+// eval_bases for every class into out(q, j): with three classes and no Fresnel-like pair among
+// the bases, one Model::eval_batch_rgb per basis (He computes its shape terms once for R, G and B).
+template <class Out>
+void ProjectedObjective::eval_bases_all(const ParamValues& pv, const SampleBlock& b, const std::vector<size_t>& js,
+                                        Out&& out) const {
+  const bool paired = std::any_of(js.begin(), js.end(), [&](size_t j) { return bases_[j].affine >= 0; });
+  if (classes_ == 1 || paired) {
+    for (int q = 0; q < classes_; ++q) eval_bases(pv, q, b, js, [&](size_t j) { return out(size_t(q), j); });
+    return;
+  }
+  for (size_t j : js) {
+    const std::array<std::vector<double>, 3> p = {basis_params(pv, 0, bases_, j), basis_params(pv, 1, bases_, j),
+                                                  basis_params(pv, 2, bases_, j)};
+    const double* const pp[3] = {p[0].data(), p[1].data(), p[2].data()};
+    double* const o[3] = {out(0, j), out(1, j), out(2, j)};
+    ctx_.model.eval_batch_rgb(pp, b.n, b.d, o);
+  }
+}
+
 void ProjectedObjective::fill_constant_bases() {
   const size_t K = bases_.size();
   const ParamValues pv = ParamValues::defaults(ctx_.model.params());
@@ -79,19 +98,24 @@ void ProjectedObjective::fill_constant_bases() {
     const SampleBlock& b = ctx_.blocks[i];
     auto& store = constant_bases_[i];
     store.assign(classes() * K, {});
-    for (int q = 0; q < classes_; ++q)
-      eval_bases(pv, q, b, js, [&](size_t j) {
-        auto& v = store[size_t(q) * K + j];
-        v.resize(b.n);
-        return v.data();
-      });
+    eval_bases_all(pv, b, js, [&](size_t q, size_t j) {
+      auto& v = store[q * K + j];
+      v.resize(b.n);
+      return v.data();
+    });
+    // A class equal to class 0 (Lambert's 1/π in every channel) is kept once: empty, read as class 0.
+    for (size_t q = 1; q < classes(); ++q)
+      for (size_t j : js)
+        if (store[q * K + j] == store[j]) std::vector<double>().swap(store[q * K + j]);
   });
 }
 
 // Basis j of class q in block i at the shape of current_.
 const double* ProjectedObjective::basis(size_t i, int q, size_t j) const {
   const size_t K = bases_.size();
-  return constant_[j] ? constant_bases_[i][size_t(q) * K + j].data() : current_.bases[i][size_t(q) * K + j].data();
+  if (!constant_[j]) return current_.bases[i][size_t(q) * K + j].data();
+  const std::vector<double>& v = constant_bases_[i][size_t(q) * K + j];
+  return (v.empty() ? constant_bases_[i][j] : v).data();
 }
 
 // Block i's varying bases at pv into current_, and its share of <B,B> (upper triangle) and <B,m_c>.
@@ -99,12 +123,11 @@ void ProjectedObjective::gram_partials(size_t i, const ParamValues& pv, double* 
   const size_t K = bases_.size(), Q = classes();
   const SampleBlock& b = ctx_.blocks[i];
   current_.bases[i].assign(Q * K, {});
-  for (size_t q = 0; q < Q; ++q)
-    eval_bases(pv, int(q), b, varying_, [&](size_t j) {
-      auto& v = current_.bases[i][q * K + j];
-      v.resize(b.n);
-      return v.data();
-    });
+  eval_bases_all(pv, b, varying_, [&](size_t q, size_t j) {
+    auto& v = current_.bases[i][q * K + j];
+    v.resize(b.n);
+    return v.data();
+  });
   for (size_t q = 0; q < Q; ++q) {
     double* G = acc + q * (K * K + 3 * K);
     double* y = G + K * K;  // y[c·K + j] = <b_j, m_c>
@@ -206,20 +229,44 @@ ProjectedObjective::Extended ProjectedObjective::extended(bool derivatives) cons
   return e;
 }
 
+// The varying bases of class q in block i at the shape of pv, from their values at x (at_x)
+// where the model rescales them without its costly terms (Model::eval_batch_from): false where it
+// cannot, and then out is to be filled by eval_bases.
+template <class Out>
+bool ProjectedObjective::rescale_bases(const ParamValues& at_x, const ParamValues& pv, int q, size_t i,
+                                       Out&& out) const {
+  const SampleBlock& b = ctx_.blocks[i];
+  for (size_t j : varying_) {
+    const std::vector<double> p = basis_params(pv, q, bases_, j), p0 = basis_params(at_x, q, bases_, j);
+    if (!ctx_.model.eval_batch_from(p.data(), p0.data(), basis(i, q, j), q, b.n, b.d, out(j))) return false;
+  }
+  return true;
+}
+
 // d_vj = (b_j(x + h_v e_v) − b_j(x)) / h_v in block i, for every class q and variable v moving it.
-ProjectedObjective::Derivatives ProjectedObjective::derivative_bases(size_t i, const std::vector<ParamValues>& shifted,
+ProjectedObjective::Derivatives ProjectedObjective::derivative_bases(size_t i, const ParamValues& at_x,
+                                                                     const std::vector<ParamValues>& shifted,
                                                                      const std::vector<double>& h) const {
   const size_t K = bases_.size(), nv = ctx_.vars.size(), Q = classes();
   const SampleBlock& b = ctx_.blocks[i];
   Derivatives dv(Q * nv * K);
+  const auto slot = [&](size_t q, size_t v, size_t j) {
+    auto& d = dv[(q * nv + v) * K + j];
+    d.resize(b.n);
+    return d.data();
+  };
+  for (size_t v = 0; v < nv; ++v) {
+    if (ctx_.vars[v].channel < 0) {  // moves every class
+      eval_bases_all(shifted[v], b, varying_, [&](size_t q, size_t j) { return slot(q, v, j); });
+      continue;
+    }
+    const int q = ctx_.vars[v].channel;  // a per-channel variable implies three classes
+    const auto out = [&](size_t j) { return slot(size_t(q), v, j); };
+    if (!rescale_bases(at_x, shifted[v], q, i, out)) eval_bases(shifted[v], q, b, varying_, out);
+  }
   for (size_t q = 0; q < Q; ++q)
     for (size_t v = 0; v < nv; ++v) {
       if (!ctx_.vars[v].affects(int(q))) continue;
-      eval_bases(shifted[v], int(q), b, varying_, [&](size_t j) {
-        auto& d = dv[(q * nv + v) * K + j];
-        d.resize(b.n);
-        return d.data();
-      });
       const double inv = 1.0 / h[v];
       for (size_t j : varying_) {
         double* d = dv[(q * nv + v) * K + j].data();
@@ -351,13 +398,14 @@ bool ProjectedObjective::evaluate(const double* x, bool derivatives, ObjectiveVa
   std::array<Eigen::VectorXd, 3> beta;
   Eigen::VectorXd lo, hi;
   if (!solve_colours(beta, lo, hi)) return false;
+  const ParamValues at_x = values;  // before the colours are written: the bases' parameters at x
   write_colours(beta, values);
   const Extended e = extended(derivatives);
   std::vector<double> h;
   const std::vector<ParamValues> shifted =
       derivatives ? shifted_points(ctx_.vars, x, ctx_.base, h) : std::vector<ParamValues>{};
   const std::vector<double> sums = ordered_reduce(ctx_.blocks.size(), e.width, [&](size_t i, double* acc) {
-    const Derivatives dv = derivatives ? derivative_bases(i, shifted, h) : Derivatives{};
+    const Derivatives dv = derivatives ? derivative_bases(i, at_x, shifted, h) : Derivatives{};
     residual_partials(i, beta, dv, derivatives, acc);
     if (derivatives) extended_partials(i, e, dv, acc);
   });

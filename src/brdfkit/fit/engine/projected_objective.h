@@ -51,6 +51,8 @@ class ProjectedObjective final : public Objective {
   template <class Out>
   void eval_bases(const ParamValues& pv, int q, const SampleBlock& b, const std::vector<std::size_t>& js,
                   Out&& out) const;
+  template <class Out>
+  void eval_bases_all(const ParamValues& pv, const SampleBlock& b, const std::vector<std::size_t>& js, Out&& out) const;
   void fill_constant_bases();
   const double* basis(std::size_t i, int q, std::size_t j) const;
   void update_gram(const double* x, const ParamValues& pv);
@@ -59,7 +61,9 @@ class ProjectedObjective final : public Objective {
   void write_colours(const std::array<Eigen::VectorXd, 3>& beta, ParamValues& pv) const;
   Extended extended(bool derivatives) const;
   using Derivatives = std::vector<std::vector<double>>;  // d_vj of class q at [(q·nv + v)·K + j]
-  Derivatives derivative_bases(std::size_t i, const std::vector<ParamValues>& shifted,
+  template <class Out>
+  bool rescale_bases(const ParamValues& at_x, const ParamValues& pv, int q, std::size_t i, Out&& out) const;
+  Derivatives derivative_bases(std::size_t i, const ParamValues& at_x, const std::vector<ParamValues>& shifted,
                                const std::vector<double>& h) const;
   void residual_partials(std::size_t i, const std::array<Eigen::VectorXd, 3>& beta, const Derivatives& dv,
                          bool derivatives, double* acc) const;
@@ -74,7 +78,7 @@ class ProjectedObjective final : public Objective {
   int classes_ = 3;                // 1 when R, G and B share one basis set
   std::vector<bool> constant_;     // basis j does not depend on the shape
   std::vector<std::size_t> varying_;
-  BlockBases constant_bases_;      // the constant bases, once per stride
+  BlockBases constant_bases_;      // the constant bases, once per stride (a class equal to class 0: empty)
   Gram current_, spare_;           // at the last point, and the one before it
 };
 

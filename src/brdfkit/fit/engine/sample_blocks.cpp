@@ -16,14 +16,17 @@ const MetricChunk& cached_chunk(const Metric& metric, size_t i) {
 
 void fill_block(const MetricChunk& ch, size_t s, double scale, SampleBlock& b) {
   b.n = (ch.size() + s - 1) / s;
-  const double* src[9] = {ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(),
-                          ch.wo_z.data(), ch.measured[0].data(), ch.measured[1].data(), ch.measured[2].data()};
-  const double* dst[9];
+  constexpr int kArrays = 10;  // the pairs, the measured values and the factor
+  const double* src[kArrays] = {ch.wi_x.data(),        ch.wi_y.data(),        ch.wi_z.data(),
+                                ch.wo_x.data(),        ch.wo_y.data(),        ch.wo_z.data(),
+                                ch.measured[0].data(), ch.measured[1].data(), ch.measured[2].data(),
+                                ch.factor.data()};
+  const double* dst[kArrays];
   if (s == 1) {
-    std::copy(src, src + 9, dst);
+    std::copy(src, src + kArrays, dst);
   } else {
-    b.own.resize(9 * b.n);
-    for (int a = 0; a < 9; ++a) {
+    b.own.resize(kArrays * b.n);
+    for (int a = 0; a < kArrays; ++a) {
       double* out = b.own.data() + size_t(a) * b.n;
       for (size_t k = 0; k < b.n; ++k) out[k] = src[a][k * s];
       dst[a] = out;
@@ -31,14 +34,12 @@ void fill_block(const MetricChunk& ch, size_t s, double scale, SampleBlock& b) {
   }
   b.d = {dst[0], dst[1], dst[2], dst[3], dst[4], dst[5]};
   for (int c = 0; c < 3; ++c) b.m[c] = dst[6 + c];
+  b.f = dst[9];
   b.w2.resize(b.n);
   b.rw.resize(b.n);
-  b.f.resize(b.n);
   for (size_t k = 0; k < b.n; ++k) {
-    const double sw = ch.sqrt_weight[k * s], f = ch.factor[k * s];
-    b.rw[k] = scale * sw * std::sqrt(double(s));
-    b.f[k] = f;
-    const double w = b.rw[k] * f;
+    b.rw[k] = scale * ch.sqrt_weight[k * s] * std::sqrt(double(s));
+    const double w = b.rw[k] * b.f[k];
     b.w2[k] = w * w;
   }
 }

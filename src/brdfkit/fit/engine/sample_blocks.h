@@ -14,8 +14,9 @@ struct SampleBlock {
   std::size_t n = 0;
   SoaPairs d{};
   const double* m[3] = {};     // measured ρ per channel
+  const double* f = nullptr;   // the factor of ρ: residual.h's f
   std::vector<double> w2;      // (scale · √w · f)² · stride: the identity residual's weight
-  std::vector<double> rw, f;   // scale · √w · √stride and f: residual.h's rw and f
+  std::vector<double> rw;      // scale · √w · √stride: residual.h's rw
   std::vector<double> own;     // gathered arrays (stride > 1)
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 // A model with another parameter table over the same formula and parameter layout: every call goes
 // to the inner model, so a fit of it is a fit of the inner model with that table's scopes, boxes
-// and defaults (per-channel shapes, the user's search boxes). The inner model's batch and paired
-// evaluations pass through.
+// and defaults (per-channel shapes, the user's search boxes). The inner model's batch evaluations
+// (plain, RGB, paired and rescaled) pass through.
 #include "brdfkit/models/model.h"
 #include "brdfkit/models/paired_evaluation.h"
 
@@ -26,6 +26,13 @@ class RetabledModel final : public Model, public PairedEvaluation {
   bool eval_batch_pair(const double* p, int c, int param, double a, double b, std::size_t n, const SoaPairs& d,
                        double* out_a, double* out_b) const override {
     return paired_ && paired_->eval_batch_pair(p, c, param, a, b, n, d, out_a, out_b);
+  }
+  void eval_batch_rgb(const double* const p[3], std::size_t n, const SoaPairs& d, double* const out[3]) const override {
+    inner_.eval_batch_rgb(p, n, d, out);
+  }
+  bool eval_batch_from(const double* p, const double* p0, const double* at_p0, int c, std::size_t n,
+                       const SoaPairs& d, double* out) const override {
+    return inner_.eval_batch_from(p, p0, at_p0, c, n, d, out);
   }
   std::optional<Vec3d> sample(const double* p, int c, const Vec3d& wo, const Vec2d& u, double u_lobe) const override {
     return inner_.sample(p, c, wo, u, u_lobe);
