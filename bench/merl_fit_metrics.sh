@@ -3,9 +3,8 @@
 # fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
-# Measured (2 cores, idle): ngan only 0.69 s wall, 1.13 s CPU, 185 MB; every metric 4.8 s wall,
-# 9.3 s CPU, 636 MB (10.3 s wall, 20.1 s CPU before the metric chunks' buffers were reused per
-# thread: a third of that time was page faults). Targets: 0.15 s and 1 s.
+# Measured (2 cores, idle): ngan only 0.25 s wall, 0.46 s CPU, 178 MB; every metric 0.58 s wall,
+# 1.08 s CPU, 583 MB. Targets: 0.15 s and 1 s.
 # Reproduce with (warm build):
 #   bash bench/merl_fit_metrics.sh [OUT_DIR]        (BUILD_DIR= overrides)
 set -euo pipefail

@@ -9,6 +9,7 @@
 // target's extension.
 #include <fmt/format.h>
 
+#include <future>
 #include <iostream>
 #include <memory>
 
@@ -84,6 +85,8 @@ int run_fit(const FitArgs& a) {
   fit::check_search_bounds(models, a.settings.bounds);
   check_output_file(a.output);  // and an output that cannot be written, before a fit of minutes
   if (!a.for_target.empty()) check_output_file(export_path(a));
+  // The digest reads the file once more: on its own thread, while the data load and the domains build.
+  std::future<std::string> sha256 = std::async(std::launch::async, [&] { return sha256_file(a.file); });
   const auto data = load_measured(a.file);
   // The fit and the reports share the metric domains they have in common (ngan, its albedo norm).
   fit::MetricStore store(*data);
@@ -91,7 +94,7 @@ int run_fit(const FitArgs& a) {
   if (a.verbose) progress = [](std::string_view line) { std::cerr << line << std::endl; };
   fit::FitJobResult r;
   try {
-    r = fit::fit_and_report(model, store, a.file, sha256_file(a.file), a.settings, report, progress);
+    r = fit::fit_and_report(model, store, a.file, sha256.get(), a.settings, report, progress);
   } catch (const fit::FitError& e) {
     std::cerr << "brdfkit: fit failed: " << e.what() << "\n";
     return 1;

@@ -73,10 +73,38 @@ TEST(MetricCells, LowE1AndE2AreTheirIntegrals) {
   EXPECT_NEAR(g2, e2, 1e-2 * e2);
 }
 
-// Only MERL tables have cells: hp-rmse (report-only, no cells weighting) keeps its grid.
-TEST(MetricCells, HpRmseKeepsItsGrid) {
+// hp-rmse: d · (∫₀^{1.4} cos²θi dθi · ∫_{θo < 1.4} dωo)^½ = d · (0.7 + sin(2.8)/4)^½ (2π (1 − cos 1.4))^½
+// (seed 004 Eq. 31, channels averaged). On cells its weight 1/(2π sinθi) is largest near the
+// pole, where the centre rule is least exact.
+TEST(MetricCells, HpRmseOfAConstantDifferenceIsTheIntegral) {
   LambertPair p;
-  EXPECT_FALSE(make_metric("hp-rmse", p.data, {8}).on_cells());
+  const Metric m = make_metric("hp-rmse", p.data);
+  ASSERT_TRUE(m.on_cells());
+  const double expected = p.d * std::sqrt((0.7 + std::sin(2.8) / 4) * 2 * kPi * (1 - std::cos(1.4)));
+  const double got = m.value(p.model, p.fitted);
+  std::printf("hp-rmse on cells %.8g, integral %.8g\n", got, expected);
+  EXPECT_NEAR(got, expected, 2e-3 * expected);
+  EXPECT_EQ(m.value(p.model, p.measured), 0.0);
+}
+
+// A cells domain only reported (MetricOptions::keep = false) is built again chunk by chunk at
+// each value(): the kept domain's number to the last bit, for folded and unfolded cells and for
+// ngan's division by Σ w; an empty table is refused as when kept.
+TEST(MetricCells, CellsNotKeptGiveTheKeptValue) {
+  LambertPair p;
+  MetricOptions kept{2}, dropped{2};
+  dropped.keep = false;
+  for (const char* id : {"ngan", "bagher", "low-e1", "low-e2", "hp-rmse"}) {
+    const Metric a = make_metric(id, p.data, kept), b = make_metric(id, p.data, dropped);
+    ASSERT_TRUE(a.on_cells() && b.on_cells()) << id;
+    EXPECT_TRUE(a.cached()) << id;
+    EXPECT_FALSE(b.cached()) << id;
+    EXPECT_EQ(a.value(p.model, p.fitted), b.value(p.model, p.fitted)) << id;
+    EXPECT_GT(a.value(p.model, p.fitted), 0.0) << id;
+  }
+  const MerlBrdf empty(merl::Table(), "empty.binary");
+  EXPECT_THROW(make_metric("hp-rmse", empty, dropped), MetricUndefined);
+  EXPECT_THROW(make_metric("hp-rmse", empty, kept), MetricUndefined);
 }
 
 }  // namespace

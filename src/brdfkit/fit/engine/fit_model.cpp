@@ -146,7 +146,8 @@ FitResult fit_model(const Model& model, const Metric& metric, const FitSettings&
   settings.validate();
   if (!metric.cached())
     throw InputError("metric '" + std::string(metric.id()) + "'",
-                     "is for reports only (its grid is too large to keep); fit under ngan, bagher, low-e1 or low-e2");
+                     "is for reports only (its domain is not kept: hp-rmse's grid is too large to keep); fit under "
+                     "ngan, bagher, low-e1 or low-e2");
   metric.check_model(model);
   const auto t0 = std::chrono::steady_clock::now();
   Engine engine(model, metric);

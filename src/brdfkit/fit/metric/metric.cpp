@@ -62,6 +62,24 @@ DomainTotals grid_domain(const GridSpec& grid, const MeasuredBrdf& data, bool ke
   return t;
 }
 
+// A MERL table's cells chunk by chunk, for the totals only (a domain not kept).
+DomainTotals cell_totals(const merl::Table& table, const CellWeighting& weighting, int coarsen) {
+  const size_t n = cell_chunk_count(coarsen);
+  std::vector<double> measure(n, 0.0);
+  std::vector<size_t> samples(n, 0);
+  tbb::parallel_for(size_t(0), n, [&](size_t i) {
+    ScratchLease<MetricChunk> scratch;
+    measure[i] = build_cell_chunk(table, weighting, coarsen, i, *scratch);
+    samples[i] = scratch->size();
+  });
+  DomainTotals t;
+  for (size_t i = 0; i < n; ++i) {  // chunk order: deterministic
+    t.weight_sum += measure[i];
+    t.samples += samples[i];
+  }
+  return t;
+}
+
 // The domain a definition gives on these data: the data's own samples (scattered formats, and
 // anisotropic tables, which a grid with wi at φ = 0 would see in one azimuth only), a MERL
 // table's cells, or the paper's grid (kept where the definition and the options allow; built on
@@ -69,17 +87,17 @@ DomainTotals grid_domain(const GridSpec& grid, const MeasuredBrdf& data, bool ke
 DomainTotals build_domain(const MetricDefinition& def, const MeasuredBrdf& data, const MetricOptions& opt,
                           std::vector<MetricChunk>& chunks, bool& on_samples, bool& on_cells) {
   const merl::Table* cells = data.merl_cells();
-  const auto sample_density = def.sample_density ? def.sample_density : def.cells.density;
-  if (!cells && sample_density && (!data.isotropic() || is_scattered(data))) {
-    SampleDomain samples = build_sample_domain(data.samples(), sample_density, def.grid.cos_i_factor);
+  if (!cells && def.cells.density && (!data.isotropic() || is_scattered(data))) {
+    SampleDomain samples = build_sample_domain(data.samples(), def.cells.density, def.grid.cos_i_factor);
     chunks = std::move(samples.chunks);
     on_samples = true;
     return {samples.measure_sum, sample_total(chunks)};
   }
   if (cells && def.cells.density && opt.domain == MetricDomain::Auto) {
+    on_cells = true;
+    if (!opt.keep) return cell_totals(*cells, def.cells, opt.coarsen);
     CellDomain domain = build_cell_domain(*cells, def.cells, opt.coarsen);
     chunks = std::move(domain.chunks);
-    on_cells = true;
     return {domain.measure_sum, sample_total(chunks)};
   }
   if (!def.cache) return {};
@@ -100,7 +118,9 @@ Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricO
   m.data_ = &data;
   const DomainTotals totals = build_domain(def, data, opt, m.chunks_, m.on_samples_, m.on_cells_);
   m.folded_ = m.on_cells_ && def.cells.fold;
-  if ((def.cache || m.on_samples_) && totals.samples == 0)
+  m.cell_weighting_ = def.cells;
+  m.coarsen_ = opt.coarsen;
+  if ((def.cache || m.on_samples_ || m.on_cells_) && totals.samples == 0)
     throw MetricUndefined(data.path(), "no measured value in the domain of metric '" + m.id_ + "'");
   double scale2 = def.channel_pool;
   if (def.divide_by_weight_sum) scale2 /= totals.weight_sum;
@@ -118,9 +138,17 @@ Metric make_metric(std::string_view id, const MeasuredBrdf& data, const MetricOp
   return build_metric(id, data, opt, [&](int coarsen) { return max_measured_albedo(data, coarsen); });
 }
 
+size_t Metric::chunk_count() const {
+  if (cached()) return chunks_.size();
+  return on_cells_ ? cell_chunk_count(coarsen_) : grid_.theta_i.size();
+}
+
 const MetricChunk& Metric::chunk(size_t i, MetricChunk& scratch) const {
-  if (!chunks_.empty()) return chunks_[i];
-  build_chunk(grid_, i, *data_, scratch);
+  if (cached()) return chunks_[i];
+  if (on_cells_)
+    build_cell_chunk(*data_->merl_cells(), cell_weighting_, coarsen_, i, scratch);
+  else
+    build_chunk(grid_, i, *data_, scratch);
   return scratch;
 }
 

@@ -13,6 +13,7 @@
 
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/registry.h"
+#include "brdfkit/fit/metric/metric_cells.h"
 #include "brdfkit/fit/metric/metric_grid.h"
 #include "brdfkit/fit/metric/residual.h"
 #include "brdfkit/measured/measured_brdf.h"
@@ -38,9 +39,10 @@ struct MetricOptions {
   // not the point (DESIGN.md §7 warns against fitting on coarser grids).
   int coarsen = 1;
   MetricDomain domain = MetricDomain::Auto;  // Auto: a MERL table's cells where the metric has them
-  // Keep a grid domain's looked-up samples (a fit evaluates them hundreds of times), or look them
-  // up again at every value(): a metric a batch only reports, once per fit, where keeping the
-  // grid of each material in flight would cost 25–130 MB per metric (bench/main_job.sh's RSS).
+  // Keep a grid's or a MERL table's cells' samples (a fit evaluates them hundreds of times), or
+  // build them again at every value(): a metric only reported, once per fit, where keeping the
+  // grid of each material in flight would cost 25–130 MB per metric (bench/main_job.sh's RSS),
+  // a MERL table's cells 80–160 MB.
   bool keep = true;
 };
 
@@ -52,8 +54,9 @@ class Metric {
   double scale() const { return scale_; }
   // The normalizing albedo (max measured albedo over θi ≤ 80°) or 1 where the metric has none.
   double albedo_norm() const { return albedo_norm_; }
-  size_t chunk_count() const { return cached() ? chunks_.size() : grid_.theta_i.size(); }
-  // Chunk i: the cached one, or built into `scratch` for metrics too large to keep (hp-rmse).
+  size_t chunk_count() const;
+  // Chunk i: the cached one, or built into `scratch` for a domain not kept (hp-rmse's grid,
+  // MetricOptions::keep = false).
   const MetricChunk& chunk(size_t i, MetricChunk& scratch) const;
   bool cached() const { return !chunks_.empty(); }
   // Valid samples over all chunks (cached metrics only; 0 otherwise).
@@ -86,6 +89,8 @@ class Metric {
   bool on_cells_ = false;
   bool on_samples_ = false;
   bool folded_ = false;
+  CellWeighting cell_weighting_;  // a cells domain built on demand
+  int coarsen_ = 1;
   const MeasuredBrdf* data_ = nullptr;  // for chunks built on demand; must outlive the metric
 };
 

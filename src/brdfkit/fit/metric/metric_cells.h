@@ -31,6 +31,13 @@ struct CellDomain {
   double measure_sum = 0;  // Σ pair measure of the cells in the domain (ngan's Σ w)
 };
 
+// The domain's chunks, one at a time (for a metric only reported, whose domain is not kept):
+// their number at a coarsening, and chunk i built into `out` (its arrays' capacity reused),
+// returning the chunk's Σ pair measure.
+size_t cell_chunk_count(int coarsen);
+double build_cell_chunk(const merl::Table& table, const CellWeighting& weighting, int coarsen, size_t i,
+                        MetricChunk& out);
+
 // The valid cells of `table` whose centre lies in the domain (μ > 0 for either orientation), in
 // file order, cut into chunks of at most 15 θd rows of one θh row. coarsen k > 1 keeps one cell
 // of each k × k × k block of indices (its middle one, when valid) with the block's measure.

@@ -17,12 +17,10 @@ struct MetricDefinition {
   bool divide_by_weight_sum = false;  // Σ w over valid samples in the denominator (seed 002 Eq. 1)
   bool divide_by_max_albedo = false;  // reported relative to the max measured albedo (seed 002 §4.1)
   bool cache = true;             // keep the looked-up domain (false: rebuilt per evaluation)
-  // The same integral on a MERL table's own cells (metric_cells.h); density nullptr: the metric
-  // keeps its grid there too.
+  // The same integral on a MERL table's own cells (metric_cells.h), and its density μ(wi, wo) on
+  // scattered samples (metric_samples.h, with the grid's cosθi factor); density nullptr: the
+  // metric keeps its grid on both.
   CellWeighting cells;
-  // μ(wi, wo) per unit pair measure on scattered samples (metric_samples.h), with the grid's
-  // cosθi factor; nullptr: cells.density.
-  double (*sample_density)(const Vec3d& wi, const Vec3d& wo) = nullptr;
 };
 
 MetricDefinition ngan_metric(int coarsen);

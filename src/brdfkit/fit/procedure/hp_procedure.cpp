@@ -6,7 +6,8 @@
 // is the same integrand (cosθi ρ compared, weights sinθo Δθo Δφo Δθi, φo over the full circle,
 // seed 003 Eq. 29–33) sampled with θi every 10° and θo, φo every 1° up to 80° (1.396 rad < 1.4):
 // minimizing it minimizes a quadrature of Eq. 29. The result is reported under hp-rmse on its
-// own grid (or under FitSettings::metric, which then is also the fitting domain).
+// own grid or a MERL table's cells (or under FitSettings::metric, which then is also the fitting
+// domain).
 //
 // hp-2step (DESIGN.md §8): the (θh, θd) cells are classified by |det(∇ log ρ, ∇f)| < threshold
 // on the φd-averaged table (measured/diffraction_map.h, seed 004 Eq. 15, Fig. 5–6); step 1 fits
