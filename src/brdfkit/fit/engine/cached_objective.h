@@ -1,8 +1,8 @@
 #pragma once
 // An objective with what the solver asks twice answered from memory, and the lowest-cost point
-// evaluated kept. On a bounded problem Ceres' projected line search asks for derivatives at a trial
-// point, then for its cost, then (once accepted) for derivatives there again: the last successful
-// result answers the repeats (the same numbers: evaluations are deterministic). A coarse level of
+// evaluated kept. On a bounded problem Ceres' projected line search asks for a trial point's cost
+// (ceres_adapter.cpp), then the trust-region step asks for it again: the last successful result
+// answers the repeat (the same numbers: evaluations are deterministic). A coarse level of
 // the fit hands its lowest-cost point to the next (Ceres evaluates a step before its parameter
 // tolerance discards it).
 #include <limits>

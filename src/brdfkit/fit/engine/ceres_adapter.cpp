@@ -80,6 +80,11 @@ LevelOutcome solve_level(CachedObjective& objective, const SolverVariables& vars
   so.gradient_tolerance = last ? 1e-14 : 1e-10;
   so.parameter_tolerance = last ? 1e-10 : 1e-6;
   so.logging_type = ceres::SILENT;
+  // Bounds make Ceres run a projected Armijo line search along every step; its default cubic
+  // interpolation asks for the gradient at each trial point, here a whole Jacobian (one sweep of
+  // the domain per variable) that a rejected trial throws away. Quadratic interpolation needs
+  // only the trial's cost, and an accepted step's Jacobian is then computed once.
+  so.line_search_interpolation_type = ceres::QUADRATIC;
   so.num_threads = 1;  // the objective is parallel inside
   StallStop stall;
   so.callbacks.push_back(&stall);

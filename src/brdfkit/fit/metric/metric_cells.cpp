@@ -13,6 +13,8 @@ namespace {
 
 constexpr int kThetaDBlock = 15;  // θd rows per chunk: 6 chunks per θh row
 
+int theta_d_blocks(int coarsen) { return (merl::kResThetaD / coarsen + kThetaDBlock - 1) / kThetaDBlock; }
+
 // Pair measure of the index block [h0, h1) × [d0, d1) × [p0, p1): the cell measure of
 // measured/merl_brdf.h (merl_cell_weight) is a product of one factor per axis, so a block's is
 // the product of the factors' sums: 2π (cos θh₀ − cos θh₁) · 2 (sin²θd₁ − sin²θd₀) · 2 Δφd.
@@ -31,7 +33,7 @@ double theta_d_factor(int d0, int d1) {
   };
   return sin2_theta_d(d1) - sin2_theta_d(d0);
 }
-double phi_d_factor(int p0, int p1) { return kPi * (p1 - p0) / merl::kResPhiD; }
+double phi_d_factor(int cells) { return kPi * cells / merl::kResPhiD; }  // Δφd of `cells` φd cells
 double block_measure(double h, double d, double p) { return 2 * kPi * h * 2 * d * 2 * p; }
 
 // merl::cell_directions of every cell, to the bit, with the sines and cosines computed once per
@@ -76,12 +78,6 @@ class CellDirections {
 
 }  // namespace
 
-namespace {
-
-int theta_d_blocks(int coarsen) { return (merl::kResThetaD / coarsen + kThetaDBlock - 1) / kThetaDBlock; }
-
-}  // namespace
-
 size_t cell_chunk_count(int coarsen) { return size_t(merl::kResThetaH / coarsen * theta_d_blocks(coarsen)); }
 
 double build_cell_chunk(const merl::Table& table, const CellWeighting& weighting, int coarsen, size_t i,
@@ -98,7 +94,7 @@ double build_cell_chunk(const merl::Table& table, const CellWeighting& weighting
                   &ch.measured[0], &ch.measured[1], &ch.measured[2]})
     v->reserve(most);
   const CellDirections::Row row = CellDirections::row(bh * k + k / 2);
-  const double h_factor = theta_h_factor(bh * k, bh * k + k), p_factor = phi_d_factor(0, k);
+  const double h_factor = theta_h_factor(bh * k, bh * k + k), p_factor = phi_d_factor(k);
   double sum = 0;
   for (int bd = bd0; bd < bd1; ++bd) {
     const double d_factor = theta_d_factor(bd * k, bd * k + k);
