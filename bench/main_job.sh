@@ -16,18 +16,20 @@ out=${1:-$(mktemp -d)/main-job}
 [ ! -e "$out" ] || { echo "main_job.sh: $out exists; give a new folder (a rerun would resume, not measure)" >&2; exit 2; }
 mkdir -p "$out"
 
-# Runs "$@" under GNU time; prints "<label>: wall W s, CPU C s, peak RSS R MB".
+# Runs "$@" under GNU time, its stdout and stderr into $out/<label>.out and .err; prints
+# "<label>: wall W s, CPU C s, peak RSS R MB".
 measure() {
   local label=$1; shift
-  /usr/bin/time -f '%e %U %S %M' -o "$out/$label.time" "$@"
+  /usr/bin/time -f '%e %U %S %M' -o "$out/$label.time" "$@" >"$out/$label.out" 2>"$out/$label.err" ||
+    { echo "main_job.sh: $label failed (exit $?); see $out/$label.err" >&2; return 1; }
   awk -v l="$label" '{ printf "%s: wall %.1f s, CPU %.1f s, peak RSS %.0f MB\n", l, $1, $2 + $3, $4 / 1024 }' \
     "$out/$label.time"
 }
 
 measure fit-all "$bin" fit-all "$data/rgl" "$data/cornell" --models "${MODELS:-single-lobe}" --jobs "${JOBS:-2}" \
-  -o "$out/fits" >"$out/fit-all.out" 2>"$out/fit-all.err"
+  -o "$out/fits"
 env_args=()
 [ -f "$data/envmaps/studio.exr" ] && env_args=(--env "$data/envmaps/studio.exr")
-measure report "$bin" report "$out/fits" "${env_args[@]}" -q >"$out/report.out"
+measure report "$bin" report "$out/fits" "${env_args[@]}" -q
 python3 "$root/bench/main_job_compare.py" "$out/fits/summary.csv" "$root/bench/main_job_reference.csv"
 echo "results: $out/fits; report: $(cat "$out/report.out")"

@@ -11,7 +11,6 @@
 #include <regex>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +23,7 @@
 #include "brdfkit/export/pbrt_scene.h"
 #include "brdfkit/export/refit.h"
 #include "brdfkit/models/model.h"
+#include "support/test_util.h"
 
 namespace brdfkit {
 namespace {
@@ -31,9 +31,9 @@ namespace {
 namespace fs = std::filesystem;
 using exporter::Provenance;
 
-fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / ("brdfkit_export_" + std::to_string(::getpid()));
-  fs::create_directories(d);
+// One scratch folder for the whole test process (its files refer to each other).
+const fs::path& temp_dir() {
+  static const fs::path d = test::scratch_dir("export");
   return d;
 }
 std::string read(const fs::path& f) {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace brdfkit::test {
 
@@ -52,11 +53,23 @@ inline CliResult run_cli(const std::string& args) {
   return r;
 }
 
-// A fresh empty folder for one test's files, removed by the caller or at exit of the process.
+// The scratch folders of this process, removed when it ends (a failed test's too: the files of a
+// failure are in its message, and a leftover folder per test process would fill /tmp).
+struct ScratchDirs {
+  std::vector<std::filesystem::path> dirs;
+  ~ScratchDirs() {
+    std::error_code ignored;
+    for (const auto& d : dirs) std::filesystem::remove_all(d, ignored);
+  }
+};
+
+// A fresh empty folder for one test's files, removed at the latest when the process ends.
 inline std::filesystem::path scratch_dir(const std::string& name) {
+  static ScratchDirs made;
   auto dir = std::filesystem::temp_directory_path() / ("brdfkit_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  made.dirs.push_back(dir);
   return dir;
 }
 

@@ -17,6 +17,7 @@
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
 #include "brdfkit/core/file_digest.h"
+#include "brdfkit/core/free_memory.h"
 #include "brdfkit/core/json_text.h"
 #include "brdfkit/fit/batch/fit_claim.h"
 #include "brdfkit/fit/metric/metric.h"
@@ -219,6 +220,7 @@ class Batch {
     }
     if (published_) compare(in, mat);
     if (row.status != FitStatus::Elsewhere || last_try) release(mat);
+    return_free_memory();  // the fit's grid share and bases: without it a batch's RSS grows with its length
     log_row(row, last_try);
   }
 

@@ -79,7 +79,7 @@ class ProjectedObjective final : public Objective {
   std::vector<bool> constant_;     // basis j does not depend on the shape
   std::vector<std::size_t> varying_;
   BlockBases constant_bases_;      // the constant bases, once per stride (a class equal to class 0: empty)
-  Gram current_, spare_;           // at the last point, and the one before it
+  Gram current_;                   // at the last point evaluated
 };
 
 }  // namespace brdfkit::fit
