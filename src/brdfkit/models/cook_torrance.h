@@ -19,6 +19,7 @@
 #include "brdfkit/measured/sample_set.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/beckmann.h"
+#include "brdfkit/ndf/d_block.h"
 #include "brdfkit/shadowing/smith.h"
 #include "brdfkit/shadowing/smith_g1_row.h"
 
@@ -91,9 +92,23 @@ struct CookTorrance {
     }
   }
 
-  // The batch loop with N = 1 or 2 Fresnel terms (out1 unused for N = 1): eval_at's body without
-  // its early return, every product in eval_at's order, so each output equals eval_at to the bit
-  // (up to the G1 row where Λ is numeric, see batch_masking).
+  static constexpr bool kDFromBlock = requires(const Ndf<double>& d, const double* c, double* o) { d.D_block(c, o); };
+
+  // The batch loop with N = 1 or 2 Fresnel terms (out1 unused for N = 1): block_loop where the
+  // distribution evaluates D on a block of cosines with vector math (ndf/d_block.h), fused_loop
+  // otherwise.
+  template <int N>
+  static void batch_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
+                         const double* __restrict wix, const double* __restrict wiy, const double* __restrict wiz,
+                         const double* __restrict wox, const double* __restrict woy, const double* __restrict woz,
+                         double* __restrict out0, double* __restrict out1) {
+    if constexpr (kDFromBlock) block_loop<N>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out0, out1);
+    else fused_loop<N>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out0, out1);
+  }
+
+  // batch_loop in one pass: eval_at's body without its early return, every product in eval_at's
+  // order, so each output equals eval_at to the bit (up to the G1 row where Λ is numeric, see
+  // batch_masking).
   // Every lane computes and the horizon test selects at the end; `&` (not `&&`) keeps the loads of
   // wi_z and wo_z unconditional: a short-circuit test makes GCC sink the wo_z load under a branch,
   // and a load that "could trap" blocks if-conversion and leaves the loop scalar (DESIGN.md §12;
@@ -101,7 +116,7 @@ struct CookTorrance {
   // calls whatever GCC's inlining budget decides elsewhere: a call left in the body keeps the
   // loop scalar too.
   template <int N>
-  [[gnu::flatten]] static void batch_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
+  [[gnu::flatten]] static void fused_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
                                           const double* __restrict wix, const double* __restrict wiy,
                                           const double* __restrict wiz, const double* __restrict wox,
                                           const double* __restrict woy, const double* __restrict woz,
@@ -119,6 +134,42 @@ struct CookTorrance {
       const double d = ndf.D(ch), g = batch_masking(ndf, row, iz, oz, ch, cd), den = 4.0 * iz * oz;
       out0[k] = above ? kd_pi + ks * (fresnel[0].eval(cd) * d * g / den) : 0.0;  // seed 004 Eq. 1
       if constexpr (N == 2) out1[k] = above ? kd_pi + ks * (fresnel[1].eval(cd) * d * g / den) : 0.0;
+    }
+  }
+
+  // batch_loop for a distribution with D_block: per block of kDBlock pairs, the cosines, then D for
+  // the whole block with vector math, then masking, Fresnel and the sum in eval_at's order. D differs
+  // from eval_at's within ndf/d_block.h's bound (1e-12 relative); the rest is as in fused_loop. The
+  // last block is padded with cosθh = 1, so every value is computed the same way wherever it lies.
+  template <int N>
+  static void block_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
+                         const double* __restrict wix, const double* __restrict wiy, const double* __restrict wiz,
+                         const double* __restrict wox, const double* __restrict woy, const double* __restrict woz,
+                         double* __restrict out0, double* __restrict out1) {
+    const Ndf<double> ndf(p + kNdfOffset);
+    const double kd_pi = p[0] * kInvPi, ks = p[1];
+    const SmithG1Row* row = nullptr;
+    if constexpr (kG1FromRow<Ndf> && kMasking != Masking::VGroove) row = &smith_g1_row(ndf);
+    alignas(64) double ch[kDBlock], cd[kDBlock], d[kDBlock];
+    for (std::size_t start = 0; start < n; start += kDBlock) {
+      const std::size_t m = std::min(kDBlock, n - start);
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t j = start + k;
+        const double hx = wix[j] + wox[j], hy = wiy[j] + woy[j], hz = wiz[j] + woz[j];
+        const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
+        ch[k] = hz / len;
+        cd[k] = 0.5 * len;
+      }
+      std::fill(ch + m, ch + kDBlock, 1.0);
+      ndf.D_block(ch, d);
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t j = start + k;
+        const double iz = wiz[j], oz = woz[j];
+        const bool above = (iz > 0.0) & (oz > 0.0);
+        const double g = batch_masking(ndf, row, iz, oz, ch[k], cd[k]), den = 4.0 * iz * oz;
+        out0[j] = above ? kd_pi + ks * (fresnel[0].eval(cd[k]) * d[k] * g / den) : 0.0;  // seed 004 Eq. 1
+        if constexpr (N == 2) out1[j] = above ? kd_pi + ks * (fresnel[1].eval(cd[k]) * d[k] * g / den) : 0.0;
+      }
     }
   }
 
@@ -145,7 +196,7 @@ struct CookTorrance {
   }
 
   // ρ of one channel at n direction pairs given as structure-of-arrays; out[k] for pair k, the
-  // values of eval_at to the bit.
+  // values of eval_at (to the bit, or within the bounds fused_loop and block_loop state).
   static void eval_batch(const double* p, int, std::size_t n, const double* wix, const double* wiy,
                          const double* wiz, const double* wox, const double* woy, const double* woz, double* out) {
     const Fresnel<double> fresnel[1] = {Fresnel<double>(p + fresnel_offset())};

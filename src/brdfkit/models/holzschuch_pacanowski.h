@@ -68,40 +68,44 @@ struct HolzschuchPacanowski {
 
   static double wavelength(int c) { return kChannelWavelengthUm[c < 0 ? 0 : (c > 2 ? 2 : c)]; }
 
-  // G1 of seed 004 §5.5 at σ tanθ (the table's argument).
-  template <class T> static T g1(const T& sigma, const T& p, const T& cos_theta) {
+  // σ tanθ, the argument of the §5.5 G1 table; 0 at the normal.
+  template <class T> static T slope_scale(const T& sigma, const T& cos_theta) {
     using std::sqrt;
     const T s2 = T(1) - cos_theta * cos_theta;
-    if (!(s2 > T(0))) return T(1);  // normal direction: no masking (and no 0/0 in a Jet's sqrt)
-    return ExponentialPowerG1Table::instance().g1(sigma * sqrt(s2) / cos_theta, p);
+    if (!(s2 > T(0))) return T(0);  // normal direction: no masking (and no 0/0 in a Jet's sqrt)
+    return sigma * sqrt(s2) / cos_theta;
+  }
+  // G1 of seed 004 §5.5.
+  template <class T> static T g1(const T& sigma, const T& p, const T& cos_theta) {
+    return ExponentialPowerG1Table::instance().g1(slope_scale(sigma, cos_theta), p);
   }
 
   template <class T> static T eval(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo) {
-    return eval_with(ExponentialPower<T>(p + kNdfOffset), p, c, wi, wo);
-  }
-
-  // The same values as eval for n pairs, with the distribution (whose normalization costs a
-  // long-double Γ(1/p): two thirds of an evaluation, measured with perf) built once per batch.
-  static void eval_batch(const double* p, int c, size_t n, const double* wi_x, const double* wi_y,
-                         const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
-                         double* out) {
-    const ExponentialPower<double> ndf(p + kNdfOffset);
-    for (size_t k = 0; k < n; ++k)
-      out[k] = eval_with(ndf, p, c, Vec3d(wi_x[k], wi_y[k], wi_z[k]), Vec3d(wo_x[k], wo_y[k], wo_z[k]));
-  }
-
-  template <class T>
-  static T eval_with(const ExponentialPower<T>& ndf, const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo) {
     using std::sqrt;
     if (!(wi.z() > T(0) && wo.z() > T(0))) return T(0);
-    const double lambda = wavelength(c);
+    const ExponentialPower<T> ndf(p + kNdfOffset);
     const Vec3<T> s = wi + wo;
     const T len = sqrt(s.dot(s));
     // |wi + wo| = 2 cosθd: one root for θh and θd, symmetric in (wi, wo).
     const T cos_h = s.z() / len, cos_d = T(0.5) * len;
     const T g = g1(ndf.sigma, ndf.p, wi.z()) * g1(ndf.sigma, ndf.p, wo.z());  // seed 004 Eq. 7
-    const T reflection = p[1] * ndf.D(cos_h) * SchlickFresnel<T>(p + kFresnelOffset).eval(cos_d) /
-                         (T(4) * wi.z() * wo.z());
+    return eval_with(p, c, wi, wo, cos_d, ndf.D(cos_h), g);
+  }
+
+  // eval's values at n pairs within 1e-12 relative: the distribution (whose normalization costs a
+  // long-double Γ(1/p)) built once per batch, and D and the G1 table's coordinate computed a block
+  // of pairs at a time with vector math (ndf/d_block.h), where eval calls libm's pow and exp three
+  // times per pair.
+  static void eval_batch(const double* p, int c, size_t n, const double* wi_x, const double* wi_y,
+                         const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                         double* out);
+
+  // ρ of Eq. 24 from D(θh), cosθd and G = G1(wi) G1(wo), for directions above the horizon.
+  template <class T>
+  static T eval_with(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, const T& cos_d, const T& d,
+                     const T& g) {
+    const double lambda = wavelength(c);
+    const T reflection = p[1] * d * SchlickFresnel<T>(p + kFresnelOffset).eval(cos_d) / (T(4) * wi.z() * wo.z());
     const T lambda4 = T(lambda * lambda * lambda * lambda);
     const T diffraction = p[2] / lambda4 * HpDiffractionLobe<T>{p[kA], lambda}.eval(wi, wo);
     return p[0] * T(kInvPi) + g * (reflection + diffraction);  // seed 004 Eq. 24

@@ -9,6 +9,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/distribution.h"
+#include "brdfkit/ndf/d_block.h"
 
 namespace brdfkit {
 
@@ -41,6 +42,12 @@ template <class T> struct BlinnPhong {
   T D(const T& cos_theta) const {
     if (!(cos_theta > T(0))) return T(0);
     return (N + T(2)) / T(2 * kPi) * unit(cos_theta);
+  }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    blinn_phong_d_block(N, c, out);
   }
   T unit(const T& cos_theta) const {
     using std::pow;

@@ -10,6 +10,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/distribution.h"
+#include "brdfkit/ndf/d_block.h"
 
 namespace brdfkit {
 
@@ -35,6 +36,12 @@ template <class T> struct Exponential {
     if (!(cos_theta > T(0))) return T(0);
     const T c2 = cos_theta * cos_theta;
     return P22((T(1) - c2) / c2) / (c2 * c2);
+  }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    exponential_d_block(alpha, c, out);
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / D(T(1)); }
 

@@ -12,6 +12,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/distribution.h"
+#include "brdfkit/ndf/d_block.h"
 #include "brdfkit/core/scalar_chain.h"
 
 namespace brdfkit {
@@ -44,6 +45,12 @@ template <class T> struct ExponentialPower {
     if (!(cos_theta > T(0))) return T(0);
     const T c2 = cos_theta * cos_theta;
     return P22((T(1) - c2) / c2) / (c2 * c2);
+  }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    exponential_power_d_block(norm, sigma, p, c, out);
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / norm; }
 

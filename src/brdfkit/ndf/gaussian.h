@@ -14,6 +14,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/distribution.h"
+#include "brdfkit/ndf/d_block.h"
 #include "brdfkit/ndf/slope_space.h"
 #include "brdfkit/core/scalar_chain.h"
 #include "brdfkit/ndf/theta_cdf.h"
@@ -65,6 +66,12 @@ template <class T> struct Gaussian {
     return exp(-theta * theta / (m * m));
   }
   T D(const T& cos_theta) const { return norm * unit(cos_theta); }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    gaussian_d_block(norm, m, c, out);
+  }
   T P22(const T& x) const { return p22_from_d(*this, x); }
 
   Vec3d sample(const Vec2d& u) const

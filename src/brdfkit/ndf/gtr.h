@@ -15,6 +15,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/distribution.h"
+#include "brdfkit/ndf/d_block.h"
 
 namespace brdfkit {
 
@@ -47,6 +48,12 @@ template <class T> struct Gtr {
     using std::pow;
     if (!(cos_theta > T(0))) return T(0);
     return norm / pow(denom(cos_theta), gamma);
+  }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    gtr_d_block(norm, alpha, gamma, c, out);
   }
   T P22(const T& x) const {
     const T c2 = T(1) / (T(1) + x);

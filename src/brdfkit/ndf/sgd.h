@@ -12,6 +12,7 @@
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
 #include "brdfkit/ndf/distribution.h"
+#include "brdfkit/ndf/d_block.h"
 #include "brdfkit/ndf/ggx.h"
 #include "brdfkit/core/upper_gamma.h"
 
@@ -41,6 +42,12 @@ template <class T> struct Sgd {
     if (!(cos_theta > T(0))) return T(0);
     const T c2 = cos_theta * cos_theta;
     return P22((T(1) - c2) / c2) / (c2 * c2);
+  }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    sgd_d_block(K, alpha, p, c, out);
   }
   // D/D(0) = e^{−(t−α)} (α/t)^p with t = α + tan²θ/α.
   T unit(const T& cos_theta) const {

@@ -27,7 +27,21 @@ class ExponentialPowerG1Table {
 
   // G1 at z = σ tanθ ≥ 0 (0 gives 1, ∞ gives 0) and shape p; bilinear in (a, b), so Jets get
   // piecewise-constant derivatives in both arguments.
-  template <class T> T g1(const T& sigma_tan_theta, const T& p) const;
+  template <class T> T g1(const T& sigma_tan_theta, const T& p) const {
+    if (!(smith_detail::scalar(sigma_tan_theta) > 0.0)) return T(1);
+    return g1_at(b_coordinate(sigma_tan_theta), p);
+  }
+  // The table's b coordinate of z > 0, in nodes: (kNb − 1) exp(−z^(−1/20)) (seed 004 §5.5).
+  template <class T> static T b_coordinate(const T& sigma_tan_theta) {
+    using std::exp;
+    using std::pow;
+    return exp(-pow(T(1) / sigma_tan_theta, T(1.0 / 20))) * T(kNb - 1);
+  }
+  // b_coordinate at the kDBlock values z[0 … kDBlock) with vector math (ndf/d_block.h's block and
+  // bound; exponential_power_g1_block.cpp); z ≤ 0 gives a value g1_at must not be given.
+  static void b_coordinate_block(const double* z, double* b);
+  // G1 at table coordinate b (b_coordinate) and shape p.
+  template <class T> T g1_at(const T& b, const T& p) const;
 
   // The slope density with σ = 1, templated for the direct integral.
   template <class T> struct UnitDistribution {
@@ -51,15 +65,10 @@ class ExponentialPowerG1Table {
 template <class T> ExponentialPowerG1Table::UnitDistribution<T>::UnitDistribution(double p_)
     : p(p_), norm(p_ / (kPi * std::tgamma(1.0 / p_))) {}
 
-template <class T> T ExponentialPowerG1Table::g1(const T& sigma_tan_theta, const T& p) const {
-  using std::exp;
-  using std::pow;
+template <class T> T ExponentialPowerG1Table::g1_at(const T& b, const T& p) const {
   namespace sd = smith_detail;
-  const double z = sd::scalar(sigma_tan_theta);
-  if (!(z > 0.0)) return T(1);
   const T pc = sd::scalar(p) < kPMin ? T(kPMin) : (sd::scalar(p) > kPMax ? T(kPMax) : p);
-  const T a = (T(5) / pc - T(5 / kPMax)) / T((5 / kPMin - 5 / kPMax) / (kNa - 1));
-  const T b = exp(-pow(T(1) / sigma_tan_theta, T(1.0 / 20))) * T(kNb - 1);  // seed 004 §5.5
+  const T a = (T(5) / pc - T(5 / kPMax)) / T((5 / kPMin - 5 / kPMax) / (kNa - 1));  // seed 004 §5.5
   const int ia = std::clamp(static_cast<int>(sd::scalar(a)), 0, kNa - 2);
   const int ib = std::clamp(static_cast<int>(sd::scalar(b)), 0, kNb - 2);
   const T fa = a - T(double(ia)), fb = b - T(double(ib));

@@ -97,7 +97,8 @@ TEST(SpeedPath, PairEvaluationEqualsTwoBatchCalls) {
 // Every registered Cook-Torrance model's batch loop (paired or not) against eval<double> at random
 // pairs: to the bit where G1 has a closed form the loop uses (GGX) or masking is V-groove; within
 // the G1 row's bound where the loop reads G1 from a row (shadowing/smith_g1_row.h: |ΔG1| ≤ 1e-6,
-// so the product of two G1 is within 2e-6 relative of eval's).
+// so the product of two G1 is within 2e-6 relative of eval's; every distribution whose D comes from
+// a block, ndf/d_block.h, reads G1 from a row, and D_block's 1e-12 is far inside that bound).
 template <class M> void expect_batch_equals_eval(int& exact, int& row) {
   const ParamTable t = M::params();
   const Pairs pairs = random_pairs(400, 9);

@@ -1,9 +1,13 @@
 // HolzschuchPacanowski::eval_batch builds the exponential-power distribution (a long-double
 // Γ(1/p)) once per batch instead of once per pair — 15.2 s → 2.7 s user for one recovery fit
-// (perf: 65 % of the time was in Boost's tgamma) — and must give eval's values to the bit, since
+// (perf: 65 % of the time was in Boost's tgamma) — and computes D and the G1 table's coordinate
+// with vector math; it must give eval's values within ndf/d_block.h's 1e-12 relative, since
 // tables are tabulated through eval and fitted through eval_batch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -13,7 +17,7 @@
 namespace brdfkit {
 namespace {
 
-TEST(HpEvalBatch, EqualsEvalToTheBit) {
+TEST(HpEvalBatch, EqualsEvalWithinVectorMathBound) {
   const Model& m = model_by_name("holzschuch-pacanowski");
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -30,7 +34,8 @@ TEST(HpEvalBatch, EqualsEvalToTheBit) {
     }
   }
   const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
-  int compared = 0;
+  int compared = 0, below = 0;
+  double worst = 0;
   for (const double p_shape : {0.15, 0.6, 1.0, 3.0}) {
     ParamValues values = ParamValues::defaults(m.params());
     values.set(m.params(), "p", p_shape);
@@ -38,12 +43,19 @@ TEST(HpEvalBatch, EqualsEvalToTheBit) {
     for (int c = 0; c < 3; ++c) {
       std::vector<double> out(n);
       m.eval_batch(values.channel(c), c, n, d, out.data());
-      for (size_t k = 0; k < n; ++k, ++compared)
-        ASSERT_EQ(out[k], m.eval(values.channel(c), c, Vec3d(v[0][k], v[1][k], v[2][k]), Vec3d(v[3][k], v[4][k], v[5][k])))
-            << "p " << p_shape << " channel " << c << " pair " << k;
+      for (size_t k = 0; k < n; ++k, ++compared) {
+        const double want =
+            m.eval(values.channel(c), c, Vec3d(v[0][k], v[1][k], v[2][k]), Vec3d(v[3][k], v[4][k], v[5][k]));
+        if (want == 0) ++below;
+        worst = std::max(worst, std::abs(out[k] - want) / std::max(want, 1e-300));
+        ASSERT_NEAR(out[k], want, 1e-12 * want) << "p " << p_shape << " channel " << c << " pair " << k;
+      }
     }
   }
+  std::printf("HP eval_batch: %d values (%d below the horizon) within %.3g relative of eval\n", compared, below,
+              worst);
   EXPECT_EQ(compared, 4 * 3 * 500);
+  EXPECT_GT(below, 100);
 }
 
 }  // namespace

@@ -1,0 +1,20 @@
+#pragma once
+// For the translation units that hold vector kernels, and only for them (ndf/d_block.cpp,
+// shadowing/exponential_power_g1_block.cpp): never include this from a header.
+//
+// glibc's libmvec holds vector variants of acos, exp, log and pow (_ZGVbN2v_exp for SSE2,
+// _ZGVdN4v_exp for AVX2, …, within 4 ulp of the scalar functions). math.h declares them only under
+// -ffast-math, which would change every other expression too. Declaring them here lets GCC
+// vectorize the loops of the files that include this, and no other call of libm in the program.
+// Each kernel runs a fixed number of values (its callers pad the block), so no value goes
+// through a scalar remainder loop: a value depends on its inputs only, not on its position.
+
+extern "C" {
+__attribute__((simd("notinbranch"))) double acos(double) noexcept;
+__attribute__((simd("notinbranch"))) double exp(double) noexcept;
+__attribute__((simd("notinbranch"))) double log(double) noexcept;
+__attribute__((simd("notinbranch"))) double pow(double, double) noexcept;
+}
+
+// An AVX2 clone for the CPUs that have it (the build targets baseline x86-64), chosen at load time.
+#define BRDFKIT_VECTOR_KERNEL [[gnu::target_clones("avx2", "default")]]
