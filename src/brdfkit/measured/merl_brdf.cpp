@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "brdfkit/measured/merl_row_cells.h"
+
 namespace brdfkit {
 
 double merl_cell_weight(const merl::Cell& c) {
@@ -20,6 +22,15 @@ double merl_cell_weight(const merl::Cell& c) {
   const double d_cos_h = std::cos(theta_h(c.theta_h)) - std::cos(theta_h(c.theta_h + 1));
   const double d_sin2_d = sin2_theta_d(c.theta_d + 1) - sin2_theta_d(c.theta_d);
   return 2 * kPi * d_cos_h * 4 * 0.5 * d_sin2_d * 2 * (kPi / kResPhiD);
+}
+
+void MerlBrdf::eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
+  thread_local std::vector<size_t> cells;
+  merl::row_cells(wi, wo, cells);
+  out.resize(wo.size());
+  for (size_t k = 0; k < wo.size(); ++k)
+    if (cells[k] != merl::kNoCell && table_.valid(cells[k])) out[k] = table_.value(cells[k]);
+    else out[k] = std::nullopt;
 }
 
 SampleSet MerlBrdf::samples() const {

@@ -18,6 +18,8 @@ class MerlBrdf final : public MeasuredBrdf {
   std::string path() const override { return path_; }
   std::string dimensions() const override { return "90 x 90 x 180 (theta_h x theta_d x phi_d)"; }
   std::optional<Rgb> eval(const Vec3d& wi, const Vec3d& wo) const override { return table_.lookup(wi, wo); }
+  // eval's cells, found a block at a time (merl_row_cells.h).
+  void eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const override;
   // Interpolating alternative to eval (merl::Table::lookup_trilinear).
   std::optional<Rgb> eval_trilinear(const Vec3d& wi, const Vec3d& wo) const { return table_.lookup_trilinear(wi, wo); }
 

@@ -9,6 +9,7 @@
 // Symmetric in θi and θr, so the model stays reciprocal to the last bit.
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
+#include <type_traits>
 
 #include "brdfkit/core/scalar_chain.h"
 #include "brdfkit/core/vec.h"
@@ -28,8 +29,11 @@ template <class T> T he_effective_roughness_of(const T& k_sum, const T& sigma0) 
   using std::sqrt;
   const T f0 = k_sum / T(std::sqrt(8 * kPi));  // He 1991 Eq. 81 divided by σ0
   const double x = he_detail::solve_z0_ratio(value_of(f0));
-  const T xt = chain(x, 1.0 / ((1 + x * x) * std::exp(0.5 * x * x)), f0);
-  return sigma0 / sqrt(T(1) + xt * xt);  // He 1991 Eq. 80
+  if constexpr (std::is_same_v<T, double>) return sigma0 / std::sqrt(1 + x * x);  // He 1991 Eq. 80
+  else {
+    const T xt = chain(x, 1.0 / ((1 + x * x) * std::exp(0.5 * x * x)), f0);  // the derivative: Jets only
+    return sigma0 / sqrt(T(1) + xt * xt);  // He 1991 Eq. 80
+  }
 }
 
 template <class T> T he_effective_roughness(const T& cos_i, const T& cos_r, const T& sigma0, const T& tau) {

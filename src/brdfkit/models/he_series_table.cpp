@@ -53,18 +53,29 @@ HeSeriesTable::HeSeriesTable()
 
 bool HeSeriesTable::covers(double g, double c) const { return g >= kGMin && g <= kGMax && c >= 0 && c <= kYMax * g; }
 
-double HeSeriesTable::operator()(double g, double c) const {
-  if (!covers(g, c)) return he_series(g, c, kRelativeError);
+HeSeriesTable::Column HeSeriesTable::column(double g) const {
+  Column col;
+  col.g = g;
+  col.in_range = g >= kGMin && g <= kGMax;
+  if (!col.in_range) return col;
+  const double fx = (std::log(g) - kX0) / kStepX;
+  col.i = std::clamp(int(fx), 1, nx_ - 3);
+  lagrange4(fx - col.i, col.wx);
+  return col;
+}
+
+double HeSeriesTable::operator()(const Column& col, double c) const {
+  const double g = col.g;
+  if (!(col.in_range && c >= 0 && c <= kYMax * g)) return he_series(g, c, kRelativeError);  // outside: covers()
   const double y = c / g;
-  const double fx = (std::log(g) - kX0) / kStepX, fy = std::log1p(y) / kStepY;
-  const int i = std::clamp(int(fx), 1, nx_ - 3), j = std::clamp(int(fy), 1, ny_ - 3);
-  double wx[4], wy[4];
-  lagrange4(fx - i, wx);
+  const double fy = std::log1p(y) / kStepY;
+  const int j = std::clamp(int(fy), 1, ny_ - 3);
+  double wy[4];
   lagrange4(fy - j, wy);
   double r = 0;
   for (int b = 0; b < 4; ++b) {
     double row = 0;
-    for (int a = 0; a < 4; ++a) row += wx[a] * node(i - 1 + a, j - 1 + b);
+    for (int a = 0; a < 4; ++a) row += col.wx[a] * node(col.i - 1 + a, j - 1 + b);
     r += wy[b] * row;
   }
   return std::exp(r - y) / g;

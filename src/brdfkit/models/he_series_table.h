@@ -23,8 +23,19 @@ class HeSeriesTable {
   // Built on first use (≈ 0.2 s, in parallel; a function-local static, so thread-safe).
   static const HeSeriesTable& get();
 
+  // What a look-up takes from g alone. A batch keeps it while g repeats (a metric's grid varies
+  // Δφ fastest, which leaves the cosines, and with them g, unchanged).
+  struct Column {
+    double g = 0;
+    bool in_range = false;  // kGMin ≤ g ≤ kGMax
+    int i = 0;              // the 4 × 4 nodes' first column + 1
+    double wx[4] = {};      // their interpolation weights in x = log g
+  };
+  Column column(double g) const;
+
   // S(g, c): from the table inside its domain, else the series summed to kRelativeError.
-  double operator()(double g, double c) const;
+  double operator()(double g, double c) const { return (*this)(column(g), c); }
+  double operator()(const Column& col, double c) const;
   // Whether (g, c) is read from the table.
   bool covers(double g, double c) const;
 

@@ -12,37 +12,67 @@ namespace brdfkit {
 
 namespace {
 
-// Calls pair(k, wi, wo, slope_i, slope_o) for the pairs above the horizon and below(k) for the
-// others, keeping wi's slope terms while wi.z repeats (a metric chunk holds one incidence).
+// A value kept while the input it is a function of repeats: the same bits as computing it anew.
+template <class V> class KeptValue {
+ public:
+  template <class F> const V& at(double input, F&& compute) {
+    if (!(input == input_)) {
+      value_ = compute(input);
+      input_ = input;
+    }
+    return value_;
+  }
+
+ private:
+  double input_ = std::numeric_limits<double>::quiet_NaN();  // equal to no input
+  V value_{};
+};
+
+// Calls pair(k, wi, wo, terms) for the pairs above the horizon and below(k) for the others. The
+// slope terms of wi and wo are kept while their cosines repeat and σ while Ki + Kr repeats.
 template <class Pair, class Below>
 void for_each_pair(const double* p, std::size_t n, const double* wi_x, const double* wi_y, const double* wi_z,
                    const double* wo_x, const double* wo_y, const double* wo_z, Pair&& pair, Below&& below) {
-  double cached_cos = std::numeric_limits<double>::quiet_NaN();  // equal to no cosine
-  HeSlopeTerms<double> slope_i;
+  const double sigma0 = p[HeTorrance::kSigma0], tau = p[HeTorrance::kTau];
+  auto slope = [&](double cos_theta) { return HeSlopeTerms<double>(cos_theta, sigma0, tau); };
+  KeptValue<HeSlopeTerms<double>> slope_i, slope_o;
+  KeptValue<double> sigma;
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3d wi(wi_x[k], wi_y[k], wi_z[k]), wo(wo_x[k], wo_y[k], wo_z[k]);
     if (!(wi.z() > 0 && wo.z() > 0)) {
       below(k);
       continue;
     }
-    if (!(wi.z() == cached_cos)) {
-      slope_i = HeSlopeTerms<double>(wi.z(), p[HeTorrance::kSigma0], p[HeTorrance::kTau]);
-      cached_cos = wi.z();
-    }
-    pair(k, wi, wo, slope_i, HeSlopeTerms<double>(wo.z(), p[HeTorrance::kSigma0], p[HeTorrance::kTau]));
+    const HeSlopeTerms<double>& si = slope_i.at(wi.z(), slope);
+    const HeSlopeTerms<double>& so = slope_o.at(wo.z(), slope);
+    const double s = sigma.at(si.k_factor + so.k_factor,
+                              [&](double k_sum) { return he_effective_roughness_of(k_sum, sigma0); });  // Eq. 80
+    pair(k, wi, wo, HeTorrance::pair_terms(wi, wo, si.shadowing * so.shadowing, s));  // Eq. 23
   }
 }
+
+// Eq. 78's series from its table (HeTorrance::series for doubles), the column in g kept while g repeats.
+class KeptSeries {
+ public:
+  double operator()(double g, double c) {
+    return table_(column_.at(g, [&](double x) { return table_.column(x); }), c);
+  }
+
+ private:
+  const HeSeriesTable& table_ = HeSeriesTable::get();
+  KeptValue<HeSeriesTable::Column> column_;
+};
 
 }  // namespace
 
 void HeTorrance::eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                             const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                             double* out) {
+  KeptSeries series;
   for_each_pair(
       p, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z,
-      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const HeSlopeTerms<double>& si,
-          const HeSlopeTerms<double>& so) {
-        out[k] = p[kKd] * kInvPi + p[kKs] * directional_diffuse_with(p, c, wi, wo, si, so);
+      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const PairTerms<double>& t) {
+        out[k] = p[kKd] * kInvPi + p[kKs] * directional_diffuse_by(p, c, wi, wo, t, series);
       },
       [&](std::size_t k) { out[k] = 0; });
 }
@@ -55,13 +85,12 @@ void HeTorrance::eval_batch_rgb(const double* const p[3], std::size_t n, const d
       for (int ch = 0; ch < 3; ++ch) eval_batch(p[ch], ch, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out[ch]);
       return;
     }
+  KeptSeries series[3];
   for_each_pair(
       p[0], n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z,
-      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const HeSlopeTerms<double>& si,
-          const HeSlopeTerms<double>& so) {
-        const PairTerms<double> t = pair_terms(p[0], wi, wo, si, so);
+      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const PairTerms<double>& t) {
         for (int c = 0; c < 3; ++c)
-          out[c][k] = p[c][kKd] * kInvPi + p[c][kKs] * directional_diffuse_of(p[c], c, wi, wo, t);
+          out[c][k] = p[c][kKd] * kInvPi + p[c][kKs] * directional_diffuse_by(p[c], c, wi, wo, t, series[c]);
       },
       [&](std::size_t k) {
         for (int c = 0; c < 3; ++c) out[c][k] = 0;

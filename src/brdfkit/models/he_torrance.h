@@ -99,13 +99,19 @@ struct HeTorrance {
   template <class T>
   static PairTerms<T> pair_terms(const T* p, const Vec3<T>& wi, const Vec3<T>& wo, const HeSlopeTerms<T>& slope_i,
                                  const HeSlopeTerms<T>& slope_o) {
+    return pair_terms(wi, wo, slope_i.shadowing * slope_o.shadowing,                             // Eq. 23
+                      he_effective_roughness_of(slope_i.k_factor + slope_o.k_factor, p[kSigma0]));  // Eq. 80
+  }
+  // The same with S(θi)S(θr) and σ given (they depend on the two cosines alone).
+  template <class T>
+  static PairTerms<T> pair_terms(const Vec3<T>& wi, const Vec3<T>& wo, const T& shadow, const T& sigma) {
     PairTerms<T> t;
     t.v = wi + wo;
     t.vxy2 = t.v.x() * t.v.x() + t.v.y() * t.v.y();
     t.vv = t.vxy2 + t.v.z() * t.v.z();
-    t.geometry = (t.vv / t.v.z()) * (t.vv / t.v.z());                                 // Eq. 76 (unpolarized)
-    t.shadow = slope_i.shadowing * slope_o.shadowing;                                  // Eq. 23
-    t.sigma = he_effective_roughness_of(slope_i.k_factor + slope_o.k_factor, p[kSigma0]);  // Eq. 80
+    t.geometry = (t.vv / t.v.z()) * (t.vv / t.v.z());  // Eq. 76 (unpolarized)
+    t.shadow = shadow;
+    t.sigma = sigma;
     return t;
   }
 
@@ -113,6 +119,13 @@ struct HeTorrance {
   template <class T>
   static T directional_diffuse_of(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, const PairTerms<T>& t,
                                   HeSeriesStats* stats = nullptr, double series_tolerance = kSeriesTolerance) {
+    return directional_diffuse_by(p, c, wi, wo, t,
+                                  [&](const T& g, const T& c_exp) { return series(g, c_exp, series_tolerance, stats); });
+  }
+  // The same with Eq. 78's series given as series_of(g, c).
+  template <class T, class Series>
+  static T directional_diffuse_by(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, const PairTerms<T>& t,
+                                  Series&& series_of) {
     using std::sqrt;
     const T& tau = p[kTau];
     const double lambda = wavelength_um(c);
@@ -121,7 +134,7 @@ struct HeTorrance {
     const T kg = T(k) * t.sigma * t.v.z();
     const T g = kg * kg;                                              // Eq. 79
     const T c_exp = T(0.25 * k * k) * tau * tau * t.vxy2;             // τ² v_xy²/4, v_xy = k |v_xy|
-    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * series(g, c_exp, series_tolerance, stats);  // Eq. 78
+    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * series_of(g, c_exp);  // Eq. 78
     return fresnel * t.geometry * t.shadow * dist / (T(kPi) * wi.z() * wo.z());  // Eq. 75
   }
 
@@ -138,8 +151,10 @@ struct HeTorrance {
     return p[kKd] * T(kInvPi) + p[kKs] * directional_diffuse(p, c, wi, wo);
   }
 
-  // eval for n pairs. A metric's grid holds one incidence per chunk (fit/metric/metric_grid.h), so
-  // wi's slope terms (an erfc and an exp) are kept while wi.z repeats: the same values as eval's.
+  // eval for n pairs, with eval's values to the bit. What depends on the cosines alone is kept
+  // while they repeat: a metric's grid holds one incidence per chunk and varies Δφ fastest
+  // (fit/metric/metric_grid.h), so the slope terms, σ and the series' column in g are computed
+  // once per (θi, θo) there.
   static void eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                          const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                          double* out);

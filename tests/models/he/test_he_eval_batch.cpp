@@ -1,5 +1,6 @@
-// HeTorrance::eval_batch keeps wi's slope terms (an erfc and an exp) while wi.z repeats, as it
-// does through a metric chunk (one incidence per chunk), and must give eval's values to the bit:
+// HeTorrance::eval_batch keeps what depends on the cosines alone (the slope terms of wi and wo, σ,
+// the series' column in g) while they repeat, as they do through a metric chunk (one incidence per
+// chunk, Δφ fastest), and must give eval's values to the bit:
 // tables are tabulated through eval and fits run through eval_batch; so must eval_batch_rgb, which
 // computes the shape terms once for R, G and B. Its eval_batch_from, which fits use for
 // differences in η and k, must give eval_batch's values to rounding.
@@ -27,10 +28,23 @@ TEST(HeEvalBatch, EqualsEvalToTheBitThroughRunsOfOneIncidence) {
       v[3 + a].push_back(wo[a]);
     }
   };
-  // Runs of one incidence (some below the horizon, value 0), then every pair its own incidence.
+  // Runs of one incidence (some below the horizon, value 0); runs of one incidence and one θo
+  // with φ varying (a metric grid's rows); runs of one θo with the incidence varying; then every
+  // pair its own incidence.
   for (int run = 0; run < 12; ++run) {
     const Vec3d wi = spherical_direction(1.65 * u(rng), 0.0);
     for (int k = 0; k < 40; ++k) push(wi, spherical_direction(1.65 * u(rng), 2 * kPi * u(rng)));
+  }
+  for (int run = 0; run < 6; ++run) {
+    const Vec3d wi = spherical_direction(1.5 * u(rng), 0.0);
+    for (int row = 0; row < 4; ++row) {
+      const double theta_o = 1.5 * u(rng);
+      for (int k = 0; k < 10; ++k) push(wi, spherical_direction(theta_o, 2 * kPi * u(rng)));
+    }
+  }
+  for (int run = 0; run < 4; ++run) {
+    const double theta_o = 1.5 * u(rng);
+    for (int k = 0; k < 10; ++k) push(spherical_direction(1.5 * u(rng), 0.0), spherical_direction(theta_o, 2 * kPi * u(rng)));
   }
   for (int k = 0; k < 200; ++k) push(spherical_direction(1.65 * u(rng), 2 * kPi * u(rng)), spherical_direction(1.65 * u(rng), 2 * kPi * u(rng)));
   const size_t n = v[0].size();
@@ -57,7 +71,7 @@ TEST(HeEvalBatch, EqualsEvalToTheBitThroughRunsOfOneIncidence) {
       }
     }
   }
-  EXPECT_EQ(compared, 3 * 3 * 680);
+  EXPECT_EQ(compared, 3 * 3 * 960);
   EXPECT_GT(nonzero, compared / 3);  // most pairs above the horizon: the comparison is not of zeros
 }
 
