@@ -12,8 +12,8 @@ namespace brdfkit {
 
 namespace {
 
-constexpr double kGMin = 2, kGMax = 1e4, kYMax = 100;  // c/g ≤ kYMax
-constexpr double kStepX = 0.04, kStepY = 0.015;
+constexpr double kGMin = 2, kGMax = 1e4, kYMax = 300;  // c/g ≤ kYMax
+constexpr double kStepX = 0.04, kStepY = 0.0125;
 constexpr double kNodeTolerance = 1e-10;
 // One column below g = kGMin and two nodes beyond the top of each axis, so that a look-up inside the
 // domain has its 4 × 4 nodes; at y = 0 (the first row) a look-up in the first cell takes the cubic
