@@ -25,7 +25,7 @@ double merl_cell_weight(const merl::Cell& c) {
 }
 
 void MerlBrdf::eval_row(const Vec3d& wi, std::span<const Vec3d> wo, std::vector<std::optional<Rgb>>& out) const {
-  thread_local std::vector<size_t> cells;
+  thread_local std::vector<size_t> cells;  // rows come from parallel loops: each thread keeps its buffer
   merl::row_cells(wi, wo, cells);
   out.resize(wo.size());
   for (size_t k = 0; k < wo.size(); ++k)

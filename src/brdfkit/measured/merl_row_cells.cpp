@@ -34,8 +34,8 @@ BRDFKIT_VECTOR_KERNEL void half_diff_block(double wix, double wiy, double wiz, c
   }
 }
 
-// Whether rounding in the angles could move x's floor: x within 1e-6 of an integer. The angles'
-// rounding moves an index coordinate by under 1e-9 (θd ≥ 1e-4; otherwise the pair is not read here).
+// Whether rounding in the angles could move x's floor: x within 1e-6 of an integer. For θd ≥ 1e-4
+// the angles' rounding moves an index coordinate by under 1e-9; a smaller θd goes to cell_of.
 bool near_boundary(double x) { return std::abs(x - std::round(x)) < 1e-6; }
 
 // The cell of one pair from its block angles, or cell_of's where a boundary is near.
