@@ -38,12 +38,11 @@ BRDFKIT_VECTOR_KERNEL void half_diff_block(double wix, double wiy, double wiz, c
 // the angles' rounding moves an index coordinate by under 1e-9; a smaller θd goes to cell_of.
 bool near_boundary(double x) { return std::abs(x - std::round(x)) < 1e-6; }
 
-// The cell of one pair from its block angles, or cell_of's where a boundary is near.
+// The cell of one pair from its block angles, or cell_of's where a boundary is near. The floor
+// rule's coordinates are index_coordinates + ½ up to rounding (~1e-13), far inside the 1e-6.
 size_t cell_from_angles(const Vec3d& wi, const Vec3d& wo, double theta_h, double theta_d, double phi_d) {
-  const double th = std::sqrt(theta_h / (kPi / 2.0) * kResThetaH * kResThetaH);  // theta_h_index's coordinate
-  const double td = theta_d / (kPi * 0.5) * kResThetaD;
-  const double pd = (phi_d < 0.0 ? phi_d + kPi : phi_d) / kPi * kResPhiD;
-  const bool exact = theta_d < 1e-4 || near_boundary(th) || near_boundary(td) || near_boundary(pd);
+  const Vec3d x = index_coordinates(theta_h, theta_d, phi_d) + Vec3d::Constant(0.5);  // cell edges at integers
+  const bool exact = theta_d < 1e-4 || near_boundary(x[0]) || near_boundary(x[1]) || near_boundary(x[2]);
   return cell_offset(exact ? cell_of(wi, wo) : cell_of(theta_h, theta_d, phi_d));
 }
 

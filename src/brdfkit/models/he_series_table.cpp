@@ -20,6 +20,9 @@ constexpr double kNodeTolerance = 1e-10;
 // through the rows 0 … 3.
 const double kX0 = std::log(kGMin) - kStepX;
 
+bool g_in_domain(double g) { return g >= kGMin && g <= kGMax; }
+bool c_in_domain(double g, double c) { return c >= 0 && c <= kYMax * g; }
+
 // Weights of the cubic Lagrange interpolant through the nodes at −1, 0, 1, 2, at t ∈ [0, 1].
 void lagrange4(double t, double w[4]) {
   w[0] = -t * (t - 1) * (t - 2) / 6;
@@ -51,12 +54,12 @@ HeSeriesTable::HeSeriesTable()
   });
 }
 
-bool HeSeriesTable::covers(double g, double c) const { return g >= kGMin && g <= kGMax && c >= 0 && c <= kYMax * g; }
+bool HeSeriesTable::covers(double g, double c) const { return g_in_domain(g) && c_in_domain(g, c); }
 
 HeSeriesTable::Column HeSeriesTable::column(double g) const {
   Column col;
   col.g = g;
-  col.in_range = g >= kGMin && g <= kGMax;
+  col.in_range = g_in_domain(g);
   if (!col.in_range) return col;
   const double fx = (std::log(g) - kX0) / kStepX;
   col.i = std::clamp(int(fx), 1, nx_ - 3);
@@ -66,7 +69,7 @@ HeSeriesTable::Column HeSeriesTable::column(double g) const {
 
 double HeSeriesTable::operator()(const Column& col, double c) const {
   const double g = col.g;
-  if (!(col.in_range && c >= 0 && c <= kYMax * g)) return he_series(g, c, kRelativeError);  // outside: covers()
+  if (!(col.in_range && c_in_domain(g, c))) return he_series(g, c, kRelativeError);  // !covers(g, c)
   const double y = c / g;
   const double fy = std::log1p(y) / kStepY;
   const int j = std::clamp(int(fy), 1, ny_ - 3);
