@@ -7,14 +7,18 @@
 // rough surfaces (g in the hundreds) e^{−g} underflows while gᵐ/m! overflows; doubles then walk by
 // term ratios, Jets form every term in log space.
 //
-// Truncation rule (why it is safe): the summation starts near the Poisson mode m ≈ g and walks
-// outwards in both directions. Going up, the ratio r_m = t_{m+1}/t_m = g m/(m+1)² · e^{c/(m(m+1))}
+// Truncation rule (why it is safe): the summation starts near the peak of t_m and walks outwards
+// in both directions. Going up, the ratio r_m = t_{m+1}/t_m = g m/(m+1)² · e^{c/(m(m+1))}
 // decreases with m, so once r_M < 1 every omitted term is below t_M r_Mʲ and the whole tail is
-// ≤ t_M r_M/(1 − r_M). Going down, t_{j−1}/t_j ≤ j²/(g (j−1)) ≤ q_m := m²/(g (m−1)) for
-// 2 ≤ j ≤ m, so once q_m < 1 the head below m is ≤ t_m q_m/(1 − q_m). Each walk stops when its
-// bound is ≤ rel_tol/2 of the partial sum; the omitted part is then ≤ rel_tol of the sum (this is
-// stricter than Radiance's He.cal, which stops when one term is < 10⁻⁶: DESIGN.md §6).
-// The bound is reported so tests can compare it with the error actually made.
+// ≤ t_M r_M/(1 − r_M). Going down, ρ_j = t_{j−1}/t_j = j²/(g (j−1)) · e^{−c/(j(j−1))} increases
+// with j (both factors do, for j ≥ 2), so ρ_j ≤ ρ_m for 2 ≤ j ≤ m and once ρ_m < 1 the head below
+// m is ≤ t_m ρ_m/(1 − ρ_m). Each walk stops when its bound is ≤ rel_tol/2 of the partial sum; the
+// omitted part is then ≤ rel_tol of the sum (this is stricter than Radiance's He.cal, which stops
+// when one term is < 10⁻⁶: DESIGN.md §6). The bound is reported so tests can compare it with the
+// error actually made.
+//
+// Where the peak is: for c ≪ g² at the Poisson mode m ≈ g; far from the specular peak (c ≫ g²)
+// e^{−c/m} moves it to much larger m, and starting at g would walk all the way up to it.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,19 +64,19 @@ inline void walk_by_ratios(double g, double c, int start, double rel_tol, Walk<d
   t = first;
   for (int m = start; m > 1 && w.terms < kMaxTerms; --m) {
     const double md = m, m0 = m - 1.0;
-    const double q = md * md / (g * m0);  // bounds t_{j−1}/t_j for every j ≤ m
-    if (q < 1) {
-      w.down_bound = t * q / (1 - q);
+    const double rho = md * md / (g * m0) * std::exp(-c / (md * m0));  // ρ_m = t_{m−1}/t_m ≥ ρ_j, j ≤ m
+    if (rho < 1) {
+      w.down_bound = t * rho / (1 - rho);
       if (w.down_bound <= 0.5 * rel_tol * w.sum) break;
     }
-    t *= q * std::exp(-c / (md * m0));  // t_{m−1}/t_m
+    t *= rho;
     w.sum += t;
     ++w.terms;
     w.down_bound = 0;  // reaching m = 1 leaves nothing below
   }
 }
 
-// Every term in log space: Jets, and doubles whose first term is near underflow (c ≫ m).
+// Every term in log space: Jets, and doubles whose largest term is near underflow (then so is the sum).
 template <class T> void walk_by_logs(const T& g, const T& c, int start, double rel_tol, Walk<T>& w) {
   using std::exp;
   using std::log;
@@ -81,7 +85,7 @@ template <class T> void walk_by_logs(const T& g, const T& c, int start, double r
   const double lgv = std::log(value_of(g)), cv = value_of(c);
   // log r_m (up) and log q_m (down), in doubles: they only steer the walk.
   auto log_up_ratio = [&](int m) { return lgv + std::log(double(m)) - 2 * std::log(m + 1.0) + cv / (double(m) * (m + 1.0)); };
-  auto log_down_ratio = [&](int m) { return 2 * std::log(double(m)) - lgv - std::log(m - 1.0); };
+  auto log_down_ratio = [&](int m) { return 2 * std::log(double(m)) - lgv - std::log(m - 1.0) - cv / (double(m) * (m - 1.0)); };
   // Geometric tail t·r/(1 − r) for log r < 0.
   auto tail = [](double t, double log_r) { const double r = std::exp(log_r); return t * r / (1 - r); };
   const T first = w.sum;
@@ -110,6 +114,22 @@ template <class T> void walk_by_logs(const T& g, const T& c, int start, double r
   }
 }
 
+// The index nearest the peak of t_m. With Stirling's ln m! and O(1/m) dropped, d/dm ln t_m is
+// F(u) = ln g − u + c e^{−2u} in u = ln m: decreasing and convex, so Newton's method converges to
+// its root, from the left monotonically (the first step from the right lands left of it). The
+// walks are exact from any start; a close one only saves terms.
+inline int peak_index(double g, double c) {
+  const double log_g = std::log(g);
+  double u = std::max(log_g, 0.5 * std::log(c));  // g, or √c where c ≫ g² (F(√c) = ln g − ln √c + 1)
+  for (int i = 0; i < 16; ++i) {
+    const double e = c * std::exp(-2 * u);
+    const double step = (log_g - u + e) / (1 + 2 * e);
+    u += step;
+    if (std::fabs(step) < 0.01) break;  // within 1 % of m: a few terms, where the peak is ~√m wide
+  }
+  return std::max(1, int(std::lround(std::exp(u))));
+}
+
 }  // namespace he_detail
 
 // Σ t_m of He et al. 1991 Eq. 78 (without its π²τ²/(4λ²) prefactor), g ≥ 0, c ≥ 0.
@@ -122,7 +142,7 @@ template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, He
     if (stats) *stats = {0, 0.0};
     return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
   }
-  const int start = std::max(1, int(std::lround(gv)));
+  const int start = he_detail::peak_index(gv, value_of(c));
   he_detail::Walk<T> w{exp(-g + double(start) * log(g) - std::lgamma(start + 1.0) - std::log(double(start)) -
                            c / double(start))};
   if constexpr (std::is_same_v<T, double>) {
