@@ -130,21 +130,25 @@ inline int peak_index(double g, double c) {
   return std::max(1, int(std::lround(std::exp(u))));
 }
 
+// log t_m.
+template <class T> T log_term(const T& g, const T& c, int m) {
+  using std::log;
+  return -g + double(m) * log(g) - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m);
+}
+
 }  // namespace he_detail
 
 // Σ t_m of He et al. 1991 Eq. 78 (without its π²τ²/(4λ²) prefactor), g ≥ 0, c ≥ 0.
 // T is double or a ceres::Jet: the walk is steered by the values, the terms carry derivatives.
 template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, HeSeriesStats* stats = nullptr) {
   using std::exp;
-  using std::log;
   const double gv = value_of(g);
   if (!(gv > 0)) {
     if (stats) *stats = {0, 0.0};
     return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
   }
   const int start = he_detail::peak_index(gv, value_of(c));
-  he_detail::Walk<T> w{exp(-g + double(start) * log(g) - std::lgamma(start + 1.0) - std::log(double(start)) -
-                           c / double(start))};
+  he_detail::Walk<T> w{exp(he_detail::log_term(g, c, start))};
   if constexpr (std::is_same_v<T, double>) {
     if (w.sum > 1e-280) he_detail::walk_by_ratios(gv, value_of(c), start, rel_tol, w);
     else he_detail::walk_by_logs(g, c, start, rel_tol, w);
@@ -157,6 +161,15 @@ template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, He
     stats->omitted_bound = s > 0 ? (w.up_bound + w.down_bound) / s : 0.0;
   }
   return w.sum;
+}
+
+// log Σ t_m for g > 0, where the sum may lie below the smallest double: the walk sums t_m/t_start
+// (the same ratios and stopping rule as he_series) and adds log t_start.
+inline double he_log_series(double g, double c, double rel_tol) {
+  const int start = he_detail::peak_index(g, c);
+  he_detail::Walk<double> w{1.0};
+  he_detail::walk_by_ratios(g, c, start, rel_tol, w);
+  return he_detail::log_term(g, c, start) + std::log(w.sum);
 }
 
 }  // namespace brdfkit

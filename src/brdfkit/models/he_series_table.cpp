@@ -12,8 +12,8 @@ namespace brdfkit {
 
 namespace {
 
-constexpr double kGMin = 2, kGMax = 1e4, kYMax = 300;  // c/g ≤ kYMax
-constexpr double kStepX = 0.04, kStepY = 0.0125;
+constexpr double kGMin = 2, kGMax = 1e4, kYMax = 1000;  // c/g ≤ kYMax
+constexpr double kStepX = 0.03, kStepY = 0.01;
 constexpr double kNodeTolerance = 1e-10;
 // One column below g = kGMin and two nodes beyond the top of each axis, so that a look-up inside the
 // domain has its 4 × 4 nodes; at y = 0 (the first row) a look-up in the first cell takes the cubic
@@ -48,7 +48,7 @@ HeSeriesTable::HeSeriesTable()
       const double y = std::expm1(j * kStepY);
       for (int i = 0; i < nx_; ++i) {
         const double g = std::exp(kX0 + i * kStepX), c = g * y;
-        r_[size_t(j) * size_t(nx_) + size_t(i)] = std::log(he_series(g, c, kNodeTolerance)) + std::log(g) + y;
+        r_[size_t(j) * size_t(nx_) + size_t(i)] = he_log_series(g, c, kNodeTolerance) + std::log(g) + y;
       }
     });
   });

@@ -5,14 +5,15 @@
 //
 // S depends on nothing but (g, c), so one table serves every parameter set and channel. It holds
 //   r(x, y) = log S + log g + c/g,   x = log g,  y = log(1 + c/g),
-// (S ≈ e^{−c/g}/g for large g: r is what is left, smooth), at steps 0.04 in x and 0.0125 in y over
-// 2 ≤ g ≤ 10⁴ (the fitter's box reaches g ≈ 3200) and c/g ≤ 300, each node summed to 10⁻¹⁰; a
-// look-up is the tensor-product cubic Lagrange interpolant of the 4 × 4 nodes around (x, y).
-// Worst relative error against the series over the table's domain: 3.4e-7 (at g ≈ 550, c/g ≈ 290;
-// tests/models/he/test_he_series_table.cpp), inside the 1e-6 to which the series itself is summed.
+// (S ≈ e^{−c/g}/g for large g: r is what is left, smooth), at steps 0.03 in x and 0.01 in y over
+// 2 ≤ g ≤ 10⁴ (the fitter's box reaches g ≈ 3200) and c/g ≤ 1000, each node summed to 10⁻¹⁰ in log
+// space (he_log_series: far from the peak of a rough surface S lies below the smallest double, r
+// does not); a look-up is the tensor-product cubic Lagrange interpolant of the 4 × 4 nodes around
+// (x, y). Worst relative error against the series over the table's domain, where S is a normal
+// double: 3.9e-7 (at g ≈ 97, c/g ≈ 990; tests/models/he/test_he_series_table.cpp), inside the 1e-6
+// to which the series itself is summed.
 // c/g reaches (τ/2σ)² (v_xy/v_z)², large away from the specular peak of a smooth, long-correlated
-// surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 21 % of look-ups have c/g > 100, 70 % of those
-// ≤ 300. Beyond 300 the domain would not be a box: at c/g = 1000, S underflows for g ≥ 730.
+// surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000.
 // Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
 #include <cstddef>
 #include <vector>
@@ -23,7 +24,7 @@ class HeSeriesTable {
  public:
   // The relative error the table keeps to (the series' own truncation, HeTorrance::kSeriesTolerance).
   static constexpr double kRelativeError = 1e-6;
-  // Built on first use (≈ 0.2 s of CPU, in parallel; a function-local static, so thread-safe).
+  // Built on first use (≈ 0.4 s of CPU, in parallel; a function-local static, so thread-safe).
   static const HeSeriesTable& get();
 
   // What a look-up takes from g alone. A batch keeps it while g repeats (a metric's grid varies

@@ -80,6 +80,25 @@ TEST(HeSeries, RatioWalkOfDoublesEqualsTheLogWalkOfJets) {
   std::printf("[ he series ] ratio walk vs log walk: worst relative difference %.3g\n", worst);
 }
 
+// log S where S lies below the smallest double (far from the peak of a rough surface, where the
+// series table's nodes need it) and where it does not: the long-double reference has the range.
+TEST(HeSeries, LogSeriesMatchesTheReferenceBelowTheSmallestDouble) {
+  double worst = 0;
+  int below = 0;
+  for (double g : {2.0, 30.0, 700.0, 3000.0, 1e4}) {
+    for (double u : {0.0, 3.0, 300.0, 1000.0}) {
+      const long double ref = reference_series(g, u * g);
+      const double err = std::abs(he_log_series(g, u * g, 1e-10) - double(std::log(ref)));
+      // the truncation (≤ 1e-10) and the rounding of log t_start (terms of size g: ~g·ε)
+      EXPECT_LE(err, 1e-10 + 1e-15 * g) << "g " << g << " c/g " << u;
+      worst = std::max(worst, err);
+      below += ref < 1e-308L;
+    }
+  }
+  std::printf("[ he series ] log series vs reference: worst absolute difference %.3g (%d sums below 1e-308)\n", worst, below);
+  EXPECT_GE(below, 3);
+}
+
 // A tighter tolerance shrinks the error with it (the rule is not a fixed term count).
 TEST(HeSeries, ToleranceControlsTheError) {
   for (double tol : {1e-3, 1e-6, 1e-10}) {

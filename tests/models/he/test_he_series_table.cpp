@@ -21,25 +21,31 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
   double worst = 0, worst_g = 0, worst_c = 0;
+  int underflows = 0;
   auto check = [&](double g, double c) {
     ASSERT_TRUE(table.covers(g, c)) << g << " " << c;
     const double want = he_series(g, c, 1e-12), got = table(g, c);
+    if (want < 1e-290) {  // far from the peak of a rough surface S underflows: no relative error
+      ++underflows;
+      return;
+    }
     const double rel = std::abs(got / want - 1);
     if (rel > worst) worst = rel, worst_g = g, worst_c = c;
   };
   for (int k = 0; k < 100000; ++k) {
-    const double g = 2 * std::pow(1e4 / 2, u(rng)), y = std::expm1(u(rng) * std::log1p(300.0));
+    const double g = 2 * std::pow(1e4 / 2, u(rng)), y = std::expm1(u(rng) * std::log1p(1000.0));
     check(g, g * y);
   }
   for (double g : {2.0, 2.0001, 99.5, 3200.0, 1e4})  // the edges of the domain
-    for (double y : {0.0, 1e-9, 0.37, 99.9, 299.9, 300.0}) check(g, g * y);
-  std::printf("He series table: worst relative difference to the series %.3g at g = %.6g, c = %.6g\n", worst, worst_g, worst_c);
+    for (double y : {0.0, 1e-9, 0.37, 99.9, 299.9, 999.9, 1000.0}) check(g, g * y);
+  std::printf("He series table: worst relative difference to the series %.3g at g = %.6g, c = %.6g (%d points underflow)\n",
+              worst, worst_g, worst_c, underflows);
   EXPECT_LT(worst, 5e-7);
 }
 
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
-  for (const auto& [g, c] : {std::pair{0.5, 3.0}, std::pair{1.9, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 15001.0}}) {
+  for (const auto& [g, c] : {std::pair{0.5, 3.0}, std::pair{1.9, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 50001.0}}) {
     EXPECT_FALSE(table.covers(g, c)) << g << " " << c;
     EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kRelativeError)) << g << " " << c;
   }
