@@ -69,7 +69,7 @@ HeSeriesTable::Column HeSeriesTable::column(double g) const {
 
 double HeSeriesTable::operator()(const Column& col, double c) const {
   const double g = col.g;
-  if (!(col.in_range && c_in_domain(g, c))) return he_series(g, c, kRelativeError);  // !covers(g, c)
+  if (!(col.in_range && c_in_domain(g, c))) return he_series(g, c, kSummedTolerance);  // !covers(g, c)
   const double y = c / g;
   const double fy = std::log1p(y) / kStepY;
   const int j = std::clamp(int(fy), 1, ny_ - 3);

@@ -47,8 +47,36 @@ TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
   for (const auto& [g, c] : {std::pair{0.5, 3.0}, std::pair{1.9, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 50001.0}}) {
     EXPECT_FALSE(table.covers(g, c)) << g << " " << c;
-    EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kRelativeError)) << g << " " << c;
+    EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kSummedTolerance)) << g << " " << c;
   }
+}
+
+// Outside its domain the table sums the series, whose value jumps where its term count changes.
+// The fitter's forward differences step by 1e-6 relative (fit/engine/finite_difference.h), so a
+// jump must stay below 1e-9 of S: it then errs by ≤ 1e-3 of a unit slope of log S in log g.
+TEST(HeSeriesTable, OutsideItsDomainJumpsTooLittleForForwardDifferences) {
+  const HeSeriesTable& table = HeSeriesTable::get();
+  double worst = 0;
+  for (const auto& [g0, c] : {std::pair{0.3, 2.0}, std::pair{1.2, 40.0}, std::pair{5.0, 6000.0}, std::pair{40.0, 1e5}}) {
+    ASSERT_FALSE(table.covers(g0, c));
+    auto terms = [c = c](double g) {
+      HeSeriesStats stats;
+      he_series(g, c, HeSeriesTable::kSummedTolerance, &stats);
+      return stats.terms;
+    };
+    // Bisect [g0, 1.5 g0] down to a change of the term count.
+    double lo = g0, hi = 1.5 * g0;
+    const int n0 = terms(lo);
+    ASSERT_NE(terms(hi), n0) << g0 << " " << c;
+    while (hi - lo > 1e-13 * lo) {
+      const double mid = 0.5 * (lo + hi);
+      (terms(mid) == n0 ? lo : hi) = mid;
+    }
+    const double jump = std::abs(table(hi, c) / table(lo, c) - 1);
+    EXPECT_LE(jump, 1e-9) << "g " << lo << " c " << c;
+    worst = std::max(worst, jump);
+  }
+  std::printf("He series table: worst jump of S where the summed series changes its term count %.3g\n", worst);
 }
 
 // The model's directional-diffuse term through the table against the same term with its series
