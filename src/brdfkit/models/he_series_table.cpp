@@ -44,11 +44,11 @@ HeSeriesTable::HeSeriesTable()
   // Isolated: the first look-up may come from inside a parallel loop, and this thread must not
   // take one of that loop's tasks (which would wait on this very initialization).
   tbb::this_task_arena::isolate([&] {
-    tbb::parallel_for(0, ny_, [&](int j) {
-      const double y = std::expm1(j * kStepY);
-      for (int i = 0; i < nx_; ++i) {
-        const double g = std::exp(kX0 + i * kStepX), c = g * y;
-        r_[size_t(j) * size_t(nx_) + size_t(i)] = he_log_series(g, c, kNodeTolerance) + std::log(g) + y;
+    tbb::parallel_for(0, nx_, [&](int i) {
+      const double g = std::exp(kX0 + i * kStepX);
+      for (int j = 0; j < ny_; ++j) {
+        const double y = std::expm1(j * kStepY);
+        r_[size_t(i) * size_t(ny_) + size_t(j)] = he_log_series(g, g * y, kNodeTolerance) + std::log(g) + y;
       }
     });
   });

@@ -50,10 +50,11 @@ class HeSeriesTable {
 
  private:
   HeSeriesTable();
-  double node(int i, int j) const { return r_[size_t(j) * size_t(nx_) + size_t(i)]; }
+  double node(int i, int j) const { return r_[size_t(i) * size_t(ny_) + size_t(j)]; }
 
   int nx_ = 0, ny_ = 0;
-  std::vector<double> r_;  // [y][x]
+  // [x][y]: a batch keeps g, so its look-ups walk along y, within 4 columns of the table.
+  std::vector<double> r_;
 };
 
 }  // namespace brdfkit
