@@ -83,7 +83,7 @@ template <class T> void walk_by_logs(const T& g, const T& c, int start, double r
   const T log_g = log(g);
   auto log_term = [&](int m) { return -g + double(m) * log_g - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m); };
   const double lgv = std::log(value_of(g)), cv = value_of(c);
-  // log r_m (up) and log q_m (down), in doubles: they only steer the walk.
+  // log r_m (up) and log ρ_m (down), in doubles: they only steer the walk.
   auto log_up_ratio = [&](int m) { return lgv + std::log(double(m)) - 2 * std::log(m + 1.0) + cv / (double(m) * (m + 1.0)); };
   auto log_down_ratio = [&](int m) { return 2 * std::log(double(m)) - lgv - std::log(m - 1.0) - cv / (double(m) * (m - 1.0)); };
   // Geometric tail t·r/(1 − r) for log r < 0.

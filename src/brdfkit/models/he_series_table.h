@@ -26,8 +26,8 @@ class HeSeriesTable {
   static constexpr double kRelativeError = 1e-6;
   // Outside its domain S is summed to this, far inside kRelativeError: the fitter differentiates
   // by forward steps of 1e-6 relative (fit/engine/finite_difference.h), and a sum truncated at
-  // 1e-6 jumps by up to that much where its term count changes, which would make such a difference
-  // wrong by O(1) (it sent vch_golden_yellow's He fit to a minimum 1 % worse).
+  // 1e-6 jumps by up to that much where its term count changes, which makes such a difference
+  // wrong by O(1): enough to send vch_golden_yellow's He fit to a minimum 1 % worse.
   static constexpr double kSummedTolerance = 1e-10;
   // Built on first use (≈ 0.4 s of CPU, in parallel; a function-local static, so thread-safe).
   static const HeSeriesTable& get();
