@@ -76,12 +76,16 @@ inline void walk_by_ratios(double g, double c, int start, double rel_tol, Walk<d
   }
 }
 
+// log t_m, given log g.
+template <class T> T log_term(const T& g, const T& log_g, const T& c, int m) {
+  return -g + double(m) * log_g - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m);
+}
+
 // Every term in log space: Jets, and doubles whose largest term is near underflow (then so is the sum).
 template <class T> void walk_by_logs(const T& g, const T& c, int start, double rel_tol, Walk<T>& w) {
   using std::exp;
   using std::log;
   const T log_g = log(g);
-  auto log_term = [&](int m) { return -g + double(m) * log_g - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m); };
   const double lgv = std::log(value_of(g)), cv = value_of(c);
   // log r_m (up) and log ρ_m (down), in doubles: they only steer the walk.
   auto log_up_ratio = [&](int m) { return lgv + std::log(double(m)) - 2 * std::log(m + 1.0) + cv / (double(m) * (m + 1.0)); };
@@ -96,7 +100,7 @@ template <class T> void walk_by_logs(const T& g, const T& c, int start, double r
       w.up_bound = tail(value_of(t), lr);
       if (w.up_bound <= 0.5 * rel_tol * value_of(w.sum)) break;
     }
-    t = exp(log_term(m + 1));
+    t = exp(log_term(g, log_g, c, m + 1));
     w.sum += t;
     ++w.terms;
   }
@@ -107,7 +111,7 @@ template <class T> void walk_by_logs(const T& g, const T& c, int start, double r
       w.down_bound = tail(value_of(t), lq);
       if (w.down_bound <= 0.5 * rel_tol * value_of(w.sum)) break;
     }
-    t = exp(log_term(m - 1));
+    t = exp(log_term(g, log_g, c, m - 1));
     w.sum += t;
     ++w.terms;
     w.down_bound = 0;
@@ -130,25 +134,20 @@ inline int peak_index(double g, double c) {
   return std::max(1, int(std::lround(std::exp(u))));
 }
 
-// log t_m.
-template <class T> T log_term(const T& g, const T& c, int m) {
-  using std::log;
-  return -g + double(m) * log(g) - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m);
-}
-
 }  // namespace he_detail
 
 // Σ t_m of He et al. 1991 Eq. 78 (without its π²τ²/(4λ²) prefactor), g ≥ 0, c ≥ 0.
 // T is double or a ceres::Jet: the walk is steered by the values, the terms carry derivatives.
 template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, HeSeriesStats* stats = nullptr) {
   using std::exp;
+  using std::log;
   const double gv = value_of(g);
   if (!(gv > 0)) {
     if (stats) *stats = {0, 0.0};
     return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
   }
   const int start = he_detail::peak_index(gv, value_of(c));
-  he_detail::Walk<T> w{exp(he_detail::log_term(g, c, start))};
+  he_detail::Walk<T> w{exp(he_detail::log_term(g, log(g), c, start))};
   if constexpr (std::is_same_v<T, double>) {
     if (w.sum > 1e-280) he_detail::walk_by_ratios(gv, value_of(c), start, rel_tol, w);
     else he_detail::walk_by_logs(g, c, start, rel_tol, w);
@@ -164,12 +163,13 @@ template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, He
 }
 
 // log Σ t_m for g > 0, where the sum may lie below the smallest double: the walk sums t_m/t_start
-// (the same ratios and stopping rule as he_series) and adds log t_start.
+// (the same ratios and stopping rule as he_series; from the peak every t_m/t_start is ≲ 1, as the
+// ratio walk needs) and adds log t_start.
 inline double he_log_series(double g, double c, double rel_tol) {
   const int start = he_detail::peak_index(g, c);
   he_detail::Walk<double> w{1.0};
   he_detail::walk_by_ratios(g, c, start, rel_tol, w);
-  return he_detail::log_term(g, c, start) + std::log(w.sum);
+  return he_detail::log_term(g, std::log(g), c, start) + std::log(w.sum);
 }
 
 }  // namespace brdfkit
