@@ -10,7 +10,11 @@
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
+#include <limits>
 #include <numeric>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "brdfkit/core/atomic_file.h"
 #include "brdfkit/core/error.h"
@@ -86,11 +90,20 @@ Table::Table()
   std::fill_n(raw_.get(), 3 * kCellCount, -1.0);
 }
 
+namespace {
+// Cells per task of the passes over a whole table: a file's read is the one serial step before
+// them, and each pass is memory-bound, so two cores halve it.
+constexpr size_t kCellsPerTask = size_t(1) << 16;
+tbb::blocked_range<size_t> all_cells() { return {0, kCellCount, kCellsPerTask}; }
+}  // namespace
+
 Table::Table(std::unique_ptr<double[]> raw)
     : raw_(std::move(raw)), valid_(std::make_unique_for_overwrite<std::uint8_t[]>(kCellCount)) {
   const double *r = raw_.get(), *g = r + kCellCount, *b = g + kCellCount;
   std::uint8_t* v = valid_.get();
-  for (size_t k = 0; k < kCellCount; ++k) v[k] = (r[k] >= 0) & (g[k] >= 0) & (b[k] >= 0);
+  tbb::parallel_for(all_cells(), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t k = range.begin(); k < range.end(); ++k) v[k] = (r[k] >= 0) & (g[k] >= 0) & (b[k] >= 0);
+  });
 }
 
 Table::Table(const Table& other)
@@ -114,7 +127,13 @@ void Table::set_raw(size_t offset, double r, double g, double b) {
 }
 
 size_t Table::valid_count() const {
-  return size_t(std::count(valid_.get(), valid_.get() + kCellCount, std::uint8_t(1)));
+  const std::uint8_t* v = valid_.get();
+  return tbb::parallel_reduce(
+      all_cells(), size_t(0),
+      [&](const tbb::blocked_range<size_t>& range, size_t n) {
+        return n + size_t(std::count(v + range.begin(), v + range.end(), std::uint8_t(1)));
+      },
+      std::plus<>());
 }
 
 std::optional<Rgb> Table::lookup(double theta_h, double theta_d, double phi_d) const {
@@ -192,20 +211,33 @@ const char* const kChannelName[3] = {"R", "G", "B"};
 // above kMaxMeasuredValue once scaled, where means and albedos overflow. The format has its own
 // "not measured" mark (a negative value); anything else is corruption, and dropping those cells
 // would pass a damaged file off as a sparse measurement.
-bool is_measurement(double raw, double limit) { return std::isfinite(raw) & (raw <= limit); }
+// (−∞ < raw ≤ limit is false for NaN: the same test without isfinite's branch.)
+bool is_measurement(double raw, double limit) {
+  return (raw > -std::numeric_limits<double>::infinity()) & (raw <= limit);
+}
 
 // Index of the first value (channel blocks R, G, B) that is no measurement; 3·kCellCount if none.
+// Each task scans its cells branch-free and searches only where one fails; the least index wins,
+// so the answer does not depend on the tasks' order.
 size_t first_corrupt_value(const double* v) {
+  constexpr size_t kNone = 3 * kCellCount;
   for (size_t c = 0; c < 3; ++c) {
     const double limit = kMaxMeasuredValue / kScale[c];
     const double* block = v + c * kCellCount;
-    bool all = true;  // a good file costs one branch-free pass; the search runs only on failure
-    for (size_t k = 0; k < kCellCount; ++k) all &= is_measurement(block[k], limit);
-    if (all) continue;
-    const double* bad = std::find_if_not(block, block + kCellCount, [&](double x) { return is_measurement(x, limit); });
-    return c * kCellCount + size_t(bad - block);
+    const size_t first = tbb::parallel_reduce(
+        all_cells(), kNone,
+        [&](const tbb::blocked_range<size_t>& range, size_t found) {
+          bool all = true;
+          for (size_t k = range.begin(); k < range.end(); ++k) all &= is_measurement(block[k], limit);
+          if (all) return found;
+          const double* bad = std::find_if_not(block + range.begin(), block + range.end(),
+                                               [&](double x) { return is_measurement(x, limit); });
+          return std::min(found, c * kCellCount + size_t(bad - block));
+        },
+        [](size_t a, size_t b) { return std::min(a, b); });
+    if (first != kNone) return first;
   }
-  return 3 * kCellCount;
+  return kNone;
 }
 
 [[noreturn]] void refuse_value(const std::string& where, double x, size_t k) {
