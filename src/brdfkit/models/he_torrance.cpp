@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <vector>
 
 #include "brdfkit/core/warp.h"
+#include "brdfkit/models/he_batch_block.h"
 #include "brdfkit/models/lobe_mixture.h"
 #include "brdfkit/ndf/beckmann.h"
 
@@ -28,53 +30,90 @@ template <class V> class KeptValue {
   V value_{};
 };
 
-// Calls pair(k, wi, wo, terms) for the pairs above the horizon and below(k) for the others. The
-// slope terms of wi and wo are kept while their cosines repeat and σ while Ki + Kr repeats.
-template <class Pair, class Below>
-void for_each_pair(const double* p, std::size_t n, const double* wi_x, const double* wi_y, const double* wi_z,
-                   const double* wo_x, const double* wo_y, const double* wo_z, Pair&& pair, Below&& below) {
-  const double sigma0 = p[HeTorrance::kSigma0], tau = p[HeTorrance::kTau];
-  auto slope = [&](double cos_theta) { return HeSlopeTerms<double>(cos_theta, sigma0, tau); };
-  KeptValue<HeSlopeTerms<double>> slope_i, slope_o;
-  KeptValue<double> sigma;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec3d wi(wi_x[k], wi_y[k], wi_z[k]), wo(wo_x[k], wo_y[k], wo_z[k]);
-    if (!(wi.z() > 0 && wo.z() > 0)) {
-      below(k);
-      continue;
-    }
-    const HeSlopeTerms<double>& si = slope_i.at(wi.z(), slope);
-    const HeSlopeTerms<double>& so = slope_o.at(wo.z(), slope);
-    const double s = sigma.at(si.k_factor + so.k_factor,
-                              [&](double k_sum) { return he_effective_roughness_of(k_sum, sigma0); });  // Eq. 80
-    pair(k, wi, wo, HeTorrance::pair_terms(wi, wo, si.shadowing * so.shadowing, s));  // Eq. 23
-  }
-}
-
-// Eq. 78's series from its table (HeTorrance::series for doubles), the column in g kept while g repeats.
-class KeptSeries {
+// The shape terms of the pairs of a batch, the slope terms of wi and wo kept while their cosines
+// repeat and σ while Ki + Kr repeats.
+class PairWalker {
  public:
-  double operator()(double g, double c) {
-    return table_(column_.at(g, [&](double x) { return table_.column(x); }), c);
+  explicit PairWalker(const double* p) : sigma0_(p[HeTorrance::kSigma0]), tau_(p[HeTorrance::kTau]) {}
+
+  // Both directions above the horizon.
+  HeTorrance::PairTerms<double> operator()(const Vec3d& wi, const Vec3d& wo) {
+    auto slope = [&](double cos_theta) { return HeSlopeTerms<double>(cos_theta, sigma0_, tau_); };
+    const HeSlopeTerms<double>& si = slope_i_.at(wi.z(), slope);
+    const HeSlopeTerms<double>& so = slope_o_.at(wo.z(), slope);
+    const double s = sigma_.at(si.k_factor + so.k_factor,
+                               [&](double k_sum) { return he_effective_roughness_of(k_sum, sigma0_); });  // Eq. 80
+    return HeTorrance::pair_terms(wi, wo, si.shadowing * so.shadowing, s);  // Eq. 23
   }
 
  private:
-  const HeSeriesTable& table_ = HeSeriesTable::get();
-  KeptValue<HeSeriesTable::Column> column_;
+  double sigma0_, tau_;
+  KeptValue<HeSlopeTerms<double>> slope_i_, slope_o_;
+  KeptValue<double> sigma_;
 };
+
+// A lane of a block that holds no pair above the horizon: the numbers of wi = wo = ẑ with σ = 1,
+// whose series the table covers (g = 4k² for every channel's k). Its value is not used.
+void set_unused(HeBlockPairs& b, std::size_t k) {
+  b.vv[k] = 4;
+  b.vz[k] = 2;
+  b.vxy2[k] = 0;
+  b.sigma[k] = 1;
+  b.geometry[k] = 4;
+  b.shadow[k] = 1;
+  b.den[k] = kPi;
+}
+
+// ρ of `count` channels (p[i]: the parameters of channel channel[i], all with the σ0 and τ of
+// p[0]) at n pairs, block by block: the shape terms pair by pair, once for every channel
+// (PairWalker), then each channel's Eq. 75 but the series (he_channel_block) and the series
+// (HeSeriesTable::block) of the whole block at once, then the products.
+void eval_channels(const double* const* p, const int* channel, int count, std::size_t n, const double* wi_x,
+                   const double* wi_y, const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                   double* const* out) {
+  const HeSeriesTable& table = HeSeriesTable::get();
+  PairWalker walk(p[0]);
+  HeBlockPairs pairs;
+  HeBlockChannel lanes[3];
+  bool above[kHeBlock];
+  for (std::size_t start = 0; start < n; start += kHeBlock) {
+    const std::size_t m = std::min(kHeBlock, n - start);
+    for (std::size_t k = 0; k < kHeBlock; ++k) {
+      const std::size_t j = start + k;
+      above[k] = k < m && wi_z[j] > 0 && wo_z[j] > 0;
+      if (!above[k]) {
+        set_unused(pairs, k);
+        continue;
+      }
+      const Vec3d wi(wi_x[j], wi_y[j], wi_z[j]), wo(wo_x[j], wo_y[j], wo_z[j]);
+      const HeTorrance::PairTerms<double> t = walk(wi, wo);
+      pairs.vv[k] = t.vv;
+      pairs.vz[k] = t.v.z();
+      pairs.vxy2[k] = t.vxy2;
+      pairs.sigma[k] = t.sigma;
+      pairs.geometry[k] = t.geometry;
+      pairs.shadow[k] = t.shadow;
+      pairs.den[k] = kPi * wi.z() * wo.z();  // as HeTorrance::unsummed
+    }
+    for (int i = 0; i < count; ++i) {
+      HeBlockChannel& l = lanes[i];
+      he_channel_block(p[i], channel[i], pairs, l);
+      table.block(l.g, l.c, l.series);
+      const double kd_pi = p[i][HeTorrance::kKd] * kInvPi, ks = p[i][HeTorrance::kKs];
+      for (std::size_t k = 0; k < m; ++k) {
+        const HeTorrance::Unsummed<double> u{l.g[k], l.c[k], l.front[k], l.scale, pairs.den[k]};
+        out[i][start + k] = above[k] ? kd_pi + ks * u.of(l.series[k]) : 0.0;
+      }
+    }
+  }
+}
 
 }  // namespace
 
 void HeTorrance::eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                             const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                             double* out) {
-  KeptSeries series;
-  for_each_pair(
-      p, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z,
-      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const PairTerms<double>& t) {
-        out[k] = p[kKd] * kInvPi + p[kKs] * directional_diffuse_by(p, c, wi, wo, t, series);
-      },
-      [&](std::size_t k) { out[k] = 0; });
+  eval_channels(&p, &c, 1, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, &out);
 }
 
 void HeTorrance::eval_batch_rgb(const double* const p[3], std::size_t n, const double* wi_x, const double* wi_y,
@@ -85,16 +124,8 @@ void HeTorrance::eval_batch_rgb(const double* const p[3], std::size_t n, const d
       for (int ch = 0; ch < 3; ++ch) eval_batch(p[ch], ch, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out[ch]);
       return;
     }
-  KeptSeries series[3];
-  for_each_pair(
-      p[0], n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z,
-      [&](std::size_t k, const Vec3d& wi, const Vec3d& wo, const PairTerms<double>& t) {
-        for (int c = 0; c < 3; ++c)
-          out[c][k] = p[c][kKd] * kInvPi + p[c][kKs] * directional_diffuse_by(p[c], c, wi, wo, t, series[c]);
-      },
-      [&](std::size_t k) {
-        for (int c = 0; c < 3; ++c) out[c][k] = 0;
-      });
+  static constexpr int kRgb[3] = {0, 1, 2};
+  eval_channels(p, kRgb, 3, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out);
 }
 
 bool HeTorrance::eval_batch_from(const double* p, const double* p0, const double* at_p0, int c, std::size_t n,
@@ -102,23 +133,26 @@ bool HeTorrance::eval_batch_from(const double* p, const double* p0, const double
                                  const double* wo_y, const double* wo_z, double* out) {
   for (int j : {kKd, kKs, kSigma0, kTau})
     if (!(p[j] == p0[j])) return false;
-  const ConductorFresnel<double> fresnel(p + kEta), fresnel0(p0 + kEta);
+  std::vector<double> f0(n);
+  he_fresnel_ratio_block(p, p0, at_p0, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out, f0.data());
+  // Below the horizon 0; where the ratio does not serve, eval_batch. dd0 = ρ(p0) − kd/π carries
+  // the rounding of kd/π: where it is under 1e-3 of it, the ratio would magnify that.
   const double diffuse = p[kKd] * kInvPi;
+  std::vector<std::size_t> index;
   for (std::size_t k = 0; k < n; ++k) {
-    const Vec3d wi(wi_x[k], wi_y[k], wi_z[k]), wo(wo_x[k], wo_y[k], wo_z[k]);
-    if (!(wi.z() > 0 && wo.z() > 0)) {
-      out[k] = 0;
-      continue;
-    }
-    // The bisector cosine as directional_diffuse_of computes it.
-    const Vec3d v = wi + wo;
-    const double vv = (v.x() * v.x() + v.y() * v.y()) + v.z() * v.z();
-    const double cos_d = 0.5 * std::sqrt(vv);
-    const double f0 = fresnel0.eval(cos_d), dd0 = at_p0[k] - diffuse;
-    // dd0 carries the rounding of kd/π: where it is under 1e-3 of it, the ratio would magnify that.
-    out[k] = f0 > 0 && std::abs(dd0) >= 1e-3 * diffuse ? diffuse + dd0 * (fresnel.eval(cos_d) / f0)
-                                                        : diffuse + p[kKs] * directional_diffuse(p, c, wi, wo);
+    if (!(wi_z[k] > 0 && wo_z[k] > 0)) out[k] = 0;
+    else if (!(f0[k] > 0 && std::abs(at_p0[k] - diffuse) >= 1e-3 * diffuse)) index.push_back(k);
   }
+  if (index.empty()) return true;
+  const std::size_t m = index.size();
+  std::vector<double> pairs(7 * m);
+  const double* from[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
+  for (int a = 0; a < 6; ++a)
+    for (std::size_t i = 0; i < m; ++i) pairs[size_t(a) * m + i] = from[a][index[i]];
+  double* rho = pairs.data() + 6 * m;
+  eval_batch(p, c, m, pairs.data(), pairs.data() + m, pairs.data() + 2 * m, pairs.data() + 3 * m,
+             pairs.data() + 4 * m, pairs.data() + 5 * m, rho);
+  for (std::size_t i = 0; i < m; ++i) out[index[i]] = rho[i];
   return true;
 }
 

@@ -126,16 +126,44 @@ struct HeTorrance {
   template <class T, class Series>
   static T directional_diffuse_by(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, const PairTerms<T>& t,
                                   Series&& series_of) {
+    const Unsummed<T> u = unsummed(p, c, wi, wo, t);
+    return u.of(series_of(u.g, u.c));
+  }
+
+  // Eq. 75 around Eq. 78's series S(g, c): ρ_dd = front · (scale · S) / den, so that a batch can
+  // look up the series of many pairs at once (HeSeriesTable::block).
+  template <class T> struct Unsummed {
+    T g, c;            // the series' arguments
+    T front, scale, den;
+    T of(const T& series) const { return front * (scale * series) / den; }
+  };
+  template <class T>
+  static Unsummed<T> unsummed(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo, const PairTerms<T>& t) {
+    return unsummed_of(p, c, t.vv, t.v.z(), t.vxy2, t.sigma, t.geometry, t.shadow, T(kPi) * wi.z() * wo.z());
+  }
+  // Eq. 78's factor of the series, π²τ²/(4λ²): the same at every pair.
+  template <class T> static T series_scale(const T* p, int c) {
+    const double lambda = wavelength_um(c);
+    return T(kPi * kPi / (4 * lambda * lambda)) * p[kTau] * p[kTau];
+  }
+  // The same from the pair terms' numbers and den = π cosθi cosθr: plain arithmetic, which
+  // he_channel_block (he_batch_block.h) runs on a block of pairs with vector instructions.
+  template <class T>
+  static Unsummed<T> unsummed_of(const T* p, int c, const T& vv, const T& vz, const T& vxy2, const T& sigma,
+                                 const T& geometry, const T& shadow, const T& den) {
     using std::sqrt;
     const T& tau = p[kTau];
     const double lambda = wavelength_um(c);
     const double k = 2 * kPi / lambda;
-    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(t.vv));  // bisector angle
-    const T kg = T(k) * t.sigma * t.v.z();
-    const T g = kg * kg;                                              // Eq. 79
-    const T c_exp = T(0.25 * k * k) * tau * tau * t.vxy2;             // τ² v_xy²/4, v_xy = k |v_xy|
-    const T dist = T(kPi * kPi / (4 * lambda * lambda)) * tau * tau * series_of(g, c_exp);  // Eq. 78
-    return fresnel * t.geometry * t.shadow * dist / (T(kPi) * wi.z() * wo.z());  // Eq. 75
+    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));  // bisector angle
+    const T kg = T(k) * sigma * vz;
+    Unsummed<T> u;
+    u.g = kg * kg;                                              // Eq. 79
+    u.c = T(0.25 * k * k) * tau * tau * vxy2;                   // τ² v_xy²/4, v_xy = k |v_xy|
+    u.scale = series_scale(p, c);
+    u.front = fresnel * geometry * shadow;                      // Eq. 75
+    u.den = den;
+    return u;
   }
 
   // The same with the slope terms of wi and wo given (both directions above the horizon).
@@ -151,16 +179,17 @@ struct HeTorrance {
     return p[kKd] * T(kInvPi) + p[kKs] * directional_diffuse(p, c, wi, wo);
   }
 
-  // eval for n pairs, with eval's values to the bit. What depends on the cosines alone is kept
-  // while they repeat: a metric's grid holds one incidence per chunk and varies Δφ fastest
-  // (fit/metric/metric_grid.h), so the slope terms, σ and the series' column in g are computed
-  // once per (θi, θo) there.
+  // eval for n pairs. What depends on the cosines alone is kept while they repeat (a metric's grid
+  // holds one incidence per chunk and varies Δφ fastest, fit/metric/metric_grid.h, so the slope
+  // terms and σ are computed once per (θi, θo) there), and the series of a block of pairs is looked
+  // up at once (HeSeriesTable::block): eval's values within 1e-12 relative.
   static void eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                          const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                          double* out);
 
   // eval_batch for R, G and B (p[c]: channel c's parameters) with the pair's shape terms computed
-  // once for the three: the same values. Where σ0 or τ differ between the channels, three eval_batch.
+  // once for the three: eval_batch's values to the bit. Where σ0 or τ differ between the
+  // channels, three eval_batch.
   static void eval_batch_rgb(const double* const p[3], std::size_t n, const double* wi_x, const double* wi_y,
                              const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                              double* const out[3]);
