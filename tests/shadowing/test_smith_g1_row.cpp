@@ -1,7 +1,8 @@
 // The G1 row (shadowing/smith_g1_row.h) against smith_g1 for every distribution of
 // ndf/distributions.h whose Λ is numeric: random parameters over each one's whole box
 // (log-uniform where its table axis is logarithmic) and θ over the hemisphere; the worst |ΔG1|
-// is printed and bounded. A row of other parameters must not pass (the control).
+// is printed and bounded. A row of other parameters must not pass (the control). Its block
+// evaluation gives g1's values to the bit, on runs of repeated cosines and on scattered ones.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "brdfkit/models/cook_torrance.h"
+#include "brdfkit/ndf/d_block.h"
 #include "brdfkit/ndf/distributions.h"
 #include "brdfkit/shadowing/smith_g1_row.h"
 
@@ -76,6 +78,29 @@ TEST(SmithG1Row, EdgesAndCache) {
   const double b = smith_g1_row(other).g1(0.3);
   EXPECT_NE(a, b);
   EXPECT_EQ(smith_g1_row(schlick).g1(0.3), a);  // both parameter sets stay cached
+}
+
+TEST(SmithG1Row, BlockEqualsG1ToTheBitOnRunsAndOnScatteredCosines) {
+  std::mt19937_64 rng(43);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double p = 0.3, sgd[2] = {0.2, 1.1};
+  const SchlickRational<double> schlick(&p);  // G1 = 1 inside its support edge
+  const Sgd<double> sgd_ndf(sgd);
+  for (const SmithG1Row* row : {&smith_g1_row(schlick), &smith_g1_row(sgd_ndf)}) {
+    std::vector<double> scattered(kDBlock), runs(kDBlock);
+    for (std::size_t k = 0; k < kDBlock; ++k) scattered[k] = 1.2 * u(rng) - 0.1;  // below the horizon too
+    for (double edge : {0.0, 1.0, -0.0, std::nan("")}) scattered[size_t(u(rng) * kDBlock)] = edge;
+    for (std::size_t k = 0; k < kDBlock; ++k) runs[k] = k % 64 == 0 ? std::cos(1.6 * u(rng)) : runs[k - 1];
+    for (const auto* cosines : {&scattered, &runs}) {
+      std::vector<double> out(kDBlock);
+      row->g1_block(cosines->data(), out.data());
+      for (std::size_t k = 0; k < kDBlock; ++k) {
+        const double want = row->g1((*cosines)[k]);
+        ASSERT_TRUE(out[k] == want || (std::isnan(out[k]) && std::isnan(want)))
+            << "cosine " << (*cosines)[k] << ": " << out[k] << " vs " << want;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -83,13 +83,14 @@ struct CookTorrance {
   // (kG1FromRow, within smith_g1_row.h's bound of masking()), masking() itself otherwise.
   static double batch_masking(const Ndf<double>& ndf, const SmithG1Row* row, double ci, double co, double ch,
                               double cd) {
-    if constexpr (kG1FromRow<Ndf> && kMasking != Masking::VGroove) {
-      const double gi = row->g1(ci), go = row->g1(co);
-      if constexpr (kMasking == Masking::SmithUncorrelated) return gi * go;
-      else return gi > 0 && go > 0 ? 1 / (1 / gi + 1 / go - 1) : 0.0;  // 1/(1 + Λi + Λo), Λ = 1/G1 − 1
-    } else {
-      return masking(ndf, ci, co, ch, cd);
-    }
+    if constexpr (kRowMasking) return masking_of_g1(row->g1(ci), row->g1(co));
+    else return masking(ndf, ci, co, ch, cd);
+  }
+  static constexpr bool kRowMasking = kG1FromRow<Ndf> && kMasking != Masking::VGroove;
+  // The Smith masking term from G1 of wi and wo.
+  static double masking_of_g1(double gi, double go) {
+    if constexpr (kMasking == Masking::SmithUncorrelated) return gi * go;
+    else return gi > 0 && go > 0 ? 1 / (1 / gi + 1 / go - 1) : 0.0;  // 1/(1 + Λi + Λo), Λ = 1/G1 − 1
   }
 
   static constexpr bool kDFromBlock = requires(const Ndf<double>& d, const double* c, double* o) { d.D_block(c, o); };
@@ -149,8 +150,11 @@ struct CookTorrance {
     const Ndf<double> ndf(p + kNdfOffset);
     const double kd_pi = p[0] * kInvPi, ks = p[1];
     const SmithG1Row* row = nullptr;
-    if constexpr (kG1FromRow<Ndf> && kMasking != Masking::VGroove) row = &smith_g1_row(ndf);
+    if constexpr (kRowMasking) row = &smith_g1_row(ndf);
     alignas(64) double ch[kDBlock], cd[kDBlock], d[kDBlock];
+    // With a G1 row: the cosines of wi and wo, then G1 of each, for the whole block at once.
+    alignas(64) double ci[kRowMasking ? kDBlock : 1], co[kRowMasking ? kDBlock : 1];
+    alignas(64) double gi[kRowMasking ? kDBlock : 1], go[kRowMasking ? kDBlock : 1];
     for (std::size_t start = 0; start < n; start += kDBlock) {
       const std::size_t m = std::min(kDBlock, n - start);
       for (std::size_t k = 0; k < m; ++k) {
@@ -162,11 +166,22 @@ struct CookTorrance {
       }
       std::fill(ch + m, ch + kDBlock, 1.0);
       ndf.D_block(ch, d);
+      if constexpr (kRowMasking) {
+        std::copy(wiz + start, wiz + start + m, ci);
+        std::copy(woz + start, woz + start + m, co);
+        std::fill(ci + m, ci + kDBlock, 1.0);
+        std::fill(co + m, co + kDBlock, 1.0);
+        row->g1_block(ci, gi);
+        row->g1_block(co, go);
+      }
       for (std::size_t k = 0; k < m; ++k) {
         const std::size_t j = start + k;
         const double iz = wiz[j], oz = woz[j];
         const bool above = (iz > 0.0) & (oz > 0.0);
-        const double g = batch_masking(ndf, row, iz, oz, ch[k], cd[k]), den = 4.0 * iz * oz;
+        double g;
+        if constexpr (kRowMasking) g = masking_of_g1(gi[k], go[k]);
+        else g = masking(ndf, iz, oz, ch[k], cd[k]);
+        const double den = 4.0 * iz * oz;
         out0[j] = above ? kd_pi + ks * (fresnel[0].eval(cd[k]) * d[k] * g / den) : 0.0;  // seed 004 Eq. 1
         if constexpr (N == 2) out1[j] = above ? kd_pi + ks * (fresnel[1].eval(cd[k]) * d[k] * g / den) : 0.0;
       }

@@ -57,7 +57,15 @@ class SmithG1Row {
                   (f3 - f2) * g[3]);
   }
 
+  // g1 at the kDBlock cosines of a batch block (ndf/d_block.h: callers pad it), the same values
+  // to the bit (smith_g1_row_block.cpp): once per run of equal cosines where they repeat (through a
+  // metric grid's chunk cosθi is constant and cosθo changes every 180 pairs), else with vector
+  // instructions.
+  void g1_block(const double* cos_theta, double* out) const;
+
  private:
+  // g1 at every lane of a block as vector arithmetic.
+  void g1_lanes(const double* cos_theta, double* out) const;
   // t½ − t_e, where Λ(t½) = 1 (monotone in tanθ: toms748 on log Λ over log r).
   template <class Lambda> double half_width(const Lambda& lambda) const {
     auto f = [&](double lr) {
