@@ -1,11 +1,12 @@
 #pragma once
 // For the translation units that hold vector kernels, and only for them (ndf/d_block.cpp,
-// shadowing/exponential_power_g1_block.cpp, measured/merl_row_cells.cpp,
-// models/he_series_block.cpp): never include this from a header.
+// shadowing/exponential_power_g1_block.cpp, shadowing/smith_g1_row_block.cpp,
+// measured/merl_row_cells.cpp, models/he_series_block.cpp, models/he_batch_block.cpp): never
+// include this from a header.
 //
-// glibc's libmvec holds vector variants of acos, atan2, exp, log, log1p and pow (_ZGVbN2v_exp for SSE2,
-// _ZGVdN4v_exp for AVX2, …, within 4 ulp of the scalar functions). math.h declares them only under
-// -ffast-math, which would change every other expression too. Declaring them here lets GCC
+// glibc's libmvec holds vector variants of acos, atan2, exp, log, log1p and pow (_ZGVbN2v_exp for
+// SSE2, _ZGVdN4v_exp for AVX2, …, within 4 ulp of the scalar functions). math.h declares them only
+// under -ffast-math, which would change every other expression too. Declaring them here lets GCC
 // vectorize the loops of the files that include this, and no other call of libm in the program.
 // Each kernel runs a fixed number of values (its callers pad the block), so no value goes
 // through a scalar remainder loop: a value depends on its inputs only, not on its position.

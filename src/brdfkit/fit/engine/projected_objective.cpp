@@ -17,10 +17,16 @@ namespace {
 
 using Eigen::Index;
 
+// Σ w² x y over a block, in four interleaved partial sums added in a fixed order: one running sum
+// waits for each addition to finish, four keep the adder busy (the sums are a third of a Cook-
+// Torrance fit's time), and the order is the same on every machine.
 double weighted_dot(const SampleBlock& b, const double* x, const double* y) {
-  double s = 0;
-  for (size_t k = 0; k < b.n; ++k) s += b.w2[k] * x[k] * y[k];
-  return s;
+  double s[4] = {0, 0, 0, 0};
+  size_t k = 0;
+  for (; k + 4 <= b.n; k += 4)
+    for (size_t l = 0; l < 4; ++l) s[l] += b.w2[k + l] * x[k + l] * y[k + l];
+  for (; k < b.n; ++k) s[0] += b.w2[k] * x[k] * y[k];
+  return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
 }  // namespace
