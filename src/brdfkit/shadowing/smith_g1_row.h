@@ -86,28 +86,32 @@ class SmithG1Row {
 };
 
 // The row of distribution `ndf` (one with a SmithShape: its coordinates key the row), from a per-thread cache
-// of the last two parameter sets: batch loops ask once per block of pairs, and the blocks of one
-// evaluation share the parameters.
+// of the last four parameter sets used: batch loops ask once per block of pairs, and a Jacobian's
+// sweep asks, block after block, for the base point and for each shape variable's shifted point
+// (three sets for a two-parameter distribution; with fewer entries than sets, every block would
+// rebuild every row).
 template <template <class> class Ndf> const SmithG1Row& smith_g1_row(const Ndf<double>& ndf) {
   using Shape = SmithShape<Ndf>;
   static_assert(Shape::kDims > 0, "smith_g1_row keys its cache by the SmithShape coordinates");
   struct Entry {
     std::array<double, Shape::kDims> key{};
-    bool valid = false;
+    std::uint64_t used = 0;  // 0: empty
     SmithG1Row row;
   };
-  thread_local std::array<Entry, 2> cache;
-  thread_local int next = 0;
+  thread_local std::array<Entry, 4> cache;
+  thread_local std::uint64_t clock = 0;
   const std::array<double, Shape::kDims> key = Shape::values(ndf);
-  for (const Entry& e : cache)
-    if (e.valid && e.key == key) return e.row;
-  Entry& e = cache[size_t(next)];
-  next = 1 - next;
+  for (Entry& e : cache)
+    if (e.used && e.key == key) {
+      e.used = ++clock;
+      return e.row;
+    }
+  Entry& e = *std::min_element(cache.begin(), cache.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
   double edge = 0;
   if constexpr (requires { Shape::tan_edge(key.data()); }) edge = Shape::tan_edge(key.data());
   e.row = SmithG1Row([&](double t) { return smith_lambda(ndf, t); }, edge);
   e.key = key;
-  e.valid = true;
+  e.used = ++clock;
   return e.row;
 }
 
