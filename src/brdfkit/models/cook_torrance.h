@@ -79,6 +79,7 @@ struct CookTorrance {
     }
   }
 
+  static constexpr bool kRowMasking = kG1FromRow<Ndf> && kMasking != Masking::VGroove;
   // masking() for doubles in the batch loops: from the G1 row where the distribution has one
   // (kG1FromRow, within smith_g1_row.h's bound of masking()), masking() itself otherwise.
   static double batch_masking(const Ndf<double>& ndf, const SmithG1Row* row, double ci, double co, double ch,
@@ -86,7 +87,6 @@ struct CookTorrance {
     if constexpr (kRowMasking) return masking_of_g1(row->g1(ci), row->g1(co));
     else return masking(ndf, ci, co, ch, cd);
   }
-  static constexpr bool kRowMasking = kG1FromRow<Ndf> && kMasking != Masking::VGroove;
   // The Smith masking term from G1 of wi and wo.
   static double masking_of_g1(double gi, double go) {
     if constexpr (kMasking == Masking::SmithUncorrelated) return gi * go;

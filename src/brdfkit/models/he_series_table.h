@@ -53,7 +53,7 @@ class HeSeriesTable {
   HeSeriesTable();
   double node(int i, int j) const { return r_[size_t(i) * size_t(ny_) + size_t(j)]; }
   // Weights of the cubic Lagrange interpolant through the nodes at −1, 0, 1, 2, at t ∈ [0, 1].
-  // (Products with the reciprocals, not divisions: a look-up would spend a third of its time dividing.)
+  // (Products with 1/6, not divisions by 6: a division costs several multiplications.)
   static void lagrange4(double t, double w[4]) {
     constexpr double kSixth = 1.0 / 6;
     w[0] = -t * (t - 1) * (t - 2) * kSixth;

@@ -145,13 +145,13 @@ bool HeTorrance::eval_batch_from(const double* p, const double* p0, const double
   }
   if (index.empty()) return true;
   const std::size_t m = index.size();
-  std::vector<double> pairs(7 * m);
+  std::vector<double> rest(7 * m);  // those pairs' six coordinates, then their ρ
   const double* from[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
   for (int a = 0; a < 6; ++a)
-    for (std::size_t i = 0; i < m; ++i) pairs[size_t(a) * m + i] = from[a][index[i]];
-  double* rho = pairs.data() + 6 * m;
-  eval_batch(p, c, m, pairs.data(), pairs.data() + m, pairs.data() + 2 * m, pairs.data() + 3 * m,
-             pairs.data() + 4 * m, pairs.data() + 5 * m, rho);
+    for (std::size_t i = 0; i < m; ++i) rest[size_t(a) * m + i] = from[a][index[i]];
+  double* rho = rest.data() + 6 * m;
+  eval_batch(p, c, m, rest.data(), rest.data() + m, rest.data() + 2 * m, rest.data() + 3 * m, rest.data() + 4 * m,
+             rest.data() + 5 * m, rho);
   for (std::size_t i = 0; i < m; ++i) out[index[i]] = rho[i];
   return true;
 }
