@@ -1,7 +1,5 @@
 // HeSeriesTable::block's interpolation (he_series_table.h) as a vector kernel: the expression of
 // HeSeriesTable::operator() lane by lane, with glibc's vector log, log1p and exp.
-#include <algorithm>
-
 #include "brdfkit/core/vector_kernel.h"
 #include "brdfkit/models/he_series_table.h"
 
@@ -19,21 +17,8 @@ BRDFKIT_VECTOR_KERNEL void HeSeriesTable::interpolate_block(const double* __rest
     const double gk = g_low < kGMax ? g_low : kGMax;
     const double c_low = c[k] > 0 ? c[k] : 0;
     const double ck = c_low < kYMax * gk ? c_low : kYMax * gk;
-    const double fx = (log(gk) - x0) * kPerStepX;
-    const int i = std::min(std::max(int(fx), 1), nx - 3);
-    double wx[4];
-    lagrange4(fx - i, wx);
     const double y = ck / gk;
-    const double fy = log1p(y) * kPerStepY;
-    const int j = std::min(std::max(int(fy), 1), ny - 3);
-    double wy[4];
-    lagrange4(fy - j, wy);
-    double r = 0;
-    for (int b = 0; b < 4; ++b) {
-      double row = 0;
-      for (int a = 0; a < 4; ++a) row += wx[a] * nodes[std::size_t(i - 1 + a) * std::size_t(ny) + std::size_t(j - 1 + b)];
-      r += wy[b] * row;
-    }
+    const double r = interpolate(nodes, nx, ny, (log(gk) - x0) * kPerStepX, log1p(y) * kPerStepY);
     s[k] = exp(r - y) / gk;
   }
 }

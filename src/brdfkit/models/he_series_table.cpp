@@ -46,21 +46,8 @@ bool HeSeriesTable::covers(double g, double c) const { return g >= kGMin && g <=
 
 double HeSeriesTable::operator()(double g, double c) const {
   if (!covers(g, c)) return he_series(g, c, kSummedTolerance);
-  const double fx = (std::log(g) - x0_) * kPerStepX;
-  const int i = std::clamp(int(fx), 1, nx_ - 3);
-  double wx[4];
-  lagrange4(fx - i, wx);
   const double y = c / g;
-  const double fy = std::log1p(y) * kPerStepY;
-  const int j = std::clamp(int(fy), 1, ny_ - 3);
-  double wy[4];
-  lagrange4(fy - j, wy);
-  double r = 0;
-  for (int b = 0; b < 4; ++b) {
-    double row = 0;
-    for (int a = 0; a < 4; ++a) row += wx[a] * node(i - 1 + a, j - 1 + b);
-    r += wy[b] * row;
-  }
+  const double r = interpolate(r_.data(), nx_, ny_, (std::log(g) - x0_) * kPerStepX, std::log1p(y) * kPerStepY);
   return std::exp(r - y) / g;
 }
 

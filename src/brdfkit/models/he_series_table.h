@@ -15,6 +15,7 @@
 // c/g reaches (τ/2σ)² (v_xy/v_z)², large away from the specular peak of a smooth, long-correlated
 // surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000.
 // Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -51,7 +52,6 @@ class HeSeriesTable {
   static constexpr double kPerStepX = 1 / kStepX, kPerStepY = 1 / kStepY;  // nodes per unit of x and y
 
   HeSeriesTable();
-  double node(int i, int j) const { return r_[size_t(i) * size_t(ny_) + size_t(j)]; }
   // Weights of the cubic Lagrange interpolant through the nodes at −1, 0, 1, 2, at t ∈ [0, 1].
   // (Products with 1/6, not divisions by 6: a division costs several multiplications.)
   static void lagrange4(double t, double w[4]) {
@@ -60,6 +60,22 @@ class HeSeriesTable {
     w[1] = (t + 1) * (t - 1) * (t - 2) * 0.5;
     w[2] = -(t + 1) * t * (t - 2) * 0.5;
     w[3] = (t + 1) * t * (t - 1) * kSixth;
+  }
+  // r at the table coordinates fx = (log g − x0)/step x, fy = log(1 + c/g)/step y: the tensor-product
+  // cubic through the 4 × 4 nodes around them. operator() and interpolate_block both read it here;
+  // always inlined, since a call left in interpolate_block's AVX2 clone keeps its loop scalar.
+  [[gnu::always_inline]] static double interpolate(const double* nodes, int nx, int ny, double fx, double fy) {
+    const int i = std::min(std::max(int(fx), 1), nx - 3), j = std::min(std::max(int(fy), 1), ny - 3);
+    double wx[4], wy[4];
+    lagrange4(fx - i, wx);
+    lagrange4(fy - j, wy);
+    double r = 0;
+    for (int b = 0; b < 4; ++b) {
+      double row = 0;
+      for (int a = 0; a < 4; ++a) row += wx[a] * nodes[size_t(i - 1 + a) * size_t(ny) + size_t(j - 1 + b)];
+      r += wy[b] * row;
+    }
+    return r;
   }
   // block's interpolation at every lane, each (g, c) first clamped into the domain (he_series_block.cpp).
   void interpolate_block(const double* g, const double* c, double* s) const;

@@ -26,6 +26,8 @@ BRDFKIT_VECTOR_KERNEL void SmithG1Row::g1_lanes(const double* __restrict cos_the
 }
 
 void SmithG1Row::g1_block(const double* cos_theta, double* out) const {
+  // A grid chunk's block holds a few runs, a block of MERL cells one per pair: one run in eight
+  // pairs separates the two.
   std::size_t runs = 1;
   for (std::size_t k = 1; k < kDBlock; ++k) runs += !(cos_theta[k] == cos_theta[k - 1]);
   if (runs * 8 > kDBlock) return g1_lanes(cos_theta, out);

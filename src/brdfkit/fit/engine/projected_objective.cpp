@@ -18,8 +18,8 @@ namespace {
 using Eigen::Index;
 
 // Σ w² x y over a block, in four interleaved partial sums added in a fixed order: one running sum
-// waits for each addition to finish, four keep the adder busy (the sums are a third of a Cook-
-// Torrance fit's time), and the order is the same on every machine.
+// waits for each addition to finish, four keep the adder busy, and the order is the same on every
+// machine.
 double weighted_dot(const SampleBlock& b, const double* x, const double* y) {
   double s[4] = {0, 0, 0, 0};
   size_t k = 0;
