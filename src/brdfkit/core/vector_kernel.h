@@ -1,11 +1,11 @@
 #pragma once
 // For the translation units that hold vector kernels, and only for them (ndf/d_block.cpp,
 // shadowing/exponential_power_g1_block.cpp, shadowing/smith_g1_row_block.cpp,
-// measured/merl_row_cells.cpp, models/he_series_block.cpp, models/he_batch_block.cpp): never
-// include this from a header.
+// shadowing/smith_integrand_block.cpp, measured/merl_row_cells.cpp, models/he_series_block.cpp,
+// models/he_batch_block.cpp): never include this from a header.
 //
-// glibc's libmvec holds vector variants of acos, atan2, exp, log, log1p and pow (_ZGVbN2v_exp for
-// SSE2, _ZGVdN4v_exp for AVX2, …, within 4 ulp of the scalar functions). math.h declares them only
+// glibc's libmvec holds vector variants of acos, atan, atan2, exp, log, log1p and pow (_ZGVbN2v_exp
+// for SSE2, _ZGVdN4v_exp for AVX2, …, within 4 ulp of the scalar functions). math.h declares them only
 // under -ffast-math, which would change every other expression too. Declaring them here lets GCC
 // vectorize the loops of the files that include this, and no other call of libm in the program.
 // Each kernel runs a fixed number of values (its callers pad the block), so no value goes
@@ -13,6 +13,7 @@
 
 extern "C" {
 __attribute__((simd("notinbranch"))) double acos(double) noexcept;
+__attribute__((simd("notinbranch"))) double atan(double) noexcept;
 __attribute__((simd("notinbranch"))) double atan2(double, double) noexcept;
 __attribute__((simd("notinbranch"))) double exp(double) noexcept;
 __attribute__((simd("notinbranch"))) double log(double) noexcept;

@@ -32,6 +32,16 @@ BRDFKIT_VECTOR_KERNEL void gtr_d_block(double norm, double alpha, double gamma, 
   }
 }
 
+BRDFKIT_VECTOR_KERNEL void gtr_p22_block(double norm, double alpha, double gamma, const double* __restrict x,
+                                         double* __restrict out) {
+  for (std::size_t k = 0; k < kP22Block; ++k) {
+    const double c2 = 1.0 / (1.0 + x[k]), c = sqrt(c2);
+    const double s = alpha * alpha * c * c + (1.0 - c) * (1.0 + c);
+    const double d = norm / pow(s, gamma);  // Burley 2012, seed 004 Table 1
+    out[k] = (c > 0.0 ? d : 0.0) * c2 * c2;
+  }
+}
+
 BRDFKIT_VECTOR_KERNEL void sgd_d_block(double K, double alpha, double p, const double* __restrict c,
                                        double* __restrict out) {
   for (std::size_t k = 0; k < kDBlock; ++k) {

@@ -55,6 +55,12 @@ template <class T> struct Gtr {
   {
     gtr_d_block(norm, alpha, gamma, c, out);
   }
+  // P22 at the kP22Block slopes x[0 … kP22Block), for the Smith integral's nodes.
+  void P22_block(const double* x, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    gtr_p22_block(norm, alpha, gamma, x, out);
+  }
   T P22(const T& x) const {
     const T c2 = T(1) / (T(1) + x);
     using std::sqrt;

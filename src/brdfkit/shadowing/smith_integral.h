@@ -36,6 +36,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "brdfkit/shadowing/smith_integrand_block.h"
+
 namespace brdfkit {
 
 namespace smith_detail {
@@ -63,13 +65,19 @@ inline constexpr int kGaussPoints = 7;
 
 // ∫ g over [lo, hi] by Gauss-Legendre on panels of width kPanelWidth laid from `hi` downwards
 // (so a finite edge at `hi` is a panel edge), skipping panels where g is negligible.
-template <class T, class G> T integrate_log_panels(const G& g, double lo, double hi) {
+// g is called on batches: g(w, out) sets out[k] = g(w[k]) for every point of w (out resized), so
+// that a distribution with a vector P22 evaluates the scan and then the rule's points together.
+template <class T, class GBatch> T integrate_log_panels_batched(const GBatch& g, double lo, double hi) {
   const int n_panels = static_cast<int>(std::ceil((hi - lo) / kPanelWidth));
   auto panel_lo = [&](int j) { return hi - (n_panels - j) * kPanelWidth; };
-  std::vector<double> edge(n_panels + 1);
+  std::vector<double> at(size_t(n_panels) + 1);
+  for (int j = 0; j <= n_panels; ++j) at[size_t(j)] = panel_lo(j);
+  std::vector<T> value;
+  g(at, value);
+  std::vector<double> edge(size_t(n_panels) + 1);
   double gmax = 0.0;
   for (int j = 0; j <= n_panels; ++j) {
-    edge[j] = std::abs(scalar(g(panel_lo(j))));
+    edge[j] = std::abs(scalar(value[size_t(j)]));
     if (!std::isfinite(edge[j])) edge[j] = 0.0;
     gmax = std::max(gmax, edge[j]);
   }
@@ -83,27 +91,53 @@ template <class T, class G> T integrate_log_panels(const G& g, double lo, double
   const auto& ws = Rule::weights();
   // log of an edge value, floored at the cut, to measure how steep a panel is.
   auto log_edge = [&](int j) { return std::log(std::max(edge[j], cut)); };
-  T sum(0);
+  struct Piece {
+    double mid, half;
+  };
+  std::vector<Piece> pieces;
   for (int j = 0; j < n_panels; ++j) {
     // A panel next to an active one is integrated too: a feature narrower than the scan step
     // between two negligible edge values would otherwise be lost.
     if (!(active(j) || active(j - 1) || active(j + 1))) continue;
     // Steep panels (sharp cut-offs such as exp(−x^p) with large p, a step of width ~1/(2p) in w)
     // are split so that each piece spans at most a factor e⁴ of the integrand.
-    const int pieces = std::clamp(static_cast<int>(std::ceil(std::abs(log_edge(j + 1) - log_edge(j)) / 4.0)), 1, 32);
-    const double width = kPanelWidth / pieces, half = 0.5 * width;
-    for (int piece = 0; piece < pieces; ++piece) {
-      const double mid = panel_lo(j) + (piece + 0.5) * width;
-      for (size_t i = 0; i < xs.size(); ++i) {
-        if (xs[i] == 0.0) {
-          sum += g(mid) * T(ws[i] * half);
-        } else {
-          sum += (g(mid + half * xs[i]) + g(mid - half * xs[i])) * T(ws[i] * half);
-        }
+    const int n = std::clamp(static_cast<int>(std::ceil(std::abs(log_edge(j + 1) - log_edge(j)) / 4.0)), 1, 32);
+    const double width = kPanelWidth / n, half = 0.5 * width;
+    for (int piece = 0; piece < n; ++piece) pieces.push_back({panel_lo(j) + (piece + 0.5) * width, half});
+  }
+  // The rule's points, piece by piece: the middle one (abscissa 0) once, the others as ± pairs.
+  at.clear();
+  for (const Piece& p : pieces)
+    for (size_t i = 0; i < xs.size(); ++i) {
+      if (xs[i] == 0.0) {
+        at.push_back(p.mid);
+      } else {
+        at.push_back(p.mid + p.half * xs[i]);
+        at.push_back(p.mid - p.half * xs[i]);
       }
     }
-  }
+  g(at, value);
+  T sum(0);
+  size_t k = 0;
+  for (const Piece& p : pieces)
+    for (size_t i = 0; i < xs.size(); ++i) {
+      if (xs[i] == 0.0) {
+        sum += value[k++] * T(ws[i] * p.half);
+      } else {
+        sum += (value[k] + value[k + 1]) * T(ws[i] * p.half);
+        k += 2;
+      }
+    }
   return sum;
+}
+
+// The same with g called point by point.
+template <class T, class G> T integrate_log_panels(const G& g, double lo, double hi) {
+  auto batch = [&](const std::vector<double>& w, std::vector<T>& out) {
+    out.resize(w.size());
+    for (size_t k = 0; k < w.size(); ++k) out[k] = g(w[k]);
+  };
+  return integrate_log_panels_batched<T>(batch, lo, hi);
 }
 
 }  // namespace smith_detail
@@ -136,6 +170,10 @@ template <class Ndf, class T> T smith_lambda_integral(const Ndf& ndf, const T& t
     }
   }
   // Integrand in w = log s, including the Jacobian ds = s dw.
+  if constexpr (std::is_same_v<T, double> && sd::HasP22Block<Ndf>) {
+    auto g = [&](const std::vector<double>& w, std::vector<double>& out) { sd::integrand_batch(ndf, inv_t2, w, out); };
+    return 2.0 * inv_t2 * sd::integrate_log_panels_batched<double>(g, w_lo, w_hi);
+  }
   auto g = [&](double w) -> T {
     const double s = std::exp(w);
     const T x = (T(1) + T(s * s)) * inv_t2;
