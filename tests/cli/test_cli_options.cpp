@@ -481,6 +481,26 @@ TEST_F(CliOptions, FitAllModelSetsExpandToTheCatalogue) {
   EXPECT_EQ(parse_model_set("single-lobe").size(), 24u);  // README: He and the 23 others
 }
 
+// models --names: fit-all's sets list as fit-all expands them, names and sets mix in the given
+// order, each model once; --names and --json exclude each other.
+TEST_F(CliOptions, ModelsNamesListsTheSetsAsFitAllExpandsThem) {
+  for (const std::string set : {"all", "single-lobe", "renderer", "anisotropic"}) {
+    const auto r = run_cli("models " + set + " --names");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::vector<std::string> want;
+    for (const Model* m : parse_model_set(set)) want.emplace_back(m->name());
+    EXPECT_EQ(test::lines_of(r.out), want) << set;
+  }
+  const auto mixed = run_cli("models he single-lobe lambert --names");
+  ASSERT_EQ(mixed.exit_code, 0) << mixed.err;
+  const std::vector<std::string> lines = test::lines_of(mixed.out);
+  ASSERT_EQ(lines.size(), 25u);  // he, the 23 other single-lobe models, lambert
+  EXPECT_EQ(lines.front(), "he");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), "he"), 1);
+  EXPECT_EQ(lines.back(), "lambert");
+  EXPECT_EQ(run_cli("models --names --json").exit_code, 2);
+}
+
 // fit-all --per-channel-shape, --seed: each fit gets them, as `fit` does. The table's lobes have
 // α = 0.1, 0.2, 0.4 per channel: one shared Ward width without the option, three increasing with
 // it, bit for bit the values `fit` finds with the same options.
