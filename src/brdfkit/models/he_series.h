@@ -81,7 +81,7 @@ template <class T> T log_term(const T& g, const T& log_g, const T& c, int m) {
   return -g + double(m) * log_g - std::lgamma(m + 1.0) - std::log(double(m)) - c / double(m);
 }
 
-// Every term in log space: Jets, and doubles whose largest term is near underflow (then so is the sum).
+// Every term in log space, for Jets (doubles walk by ratios, he_series).
 template <class T> void walk_by_logs(const T& g, const T& c, int start, double rel_tol, Walk<T>& w) {
   using std::exp;
   using std::log;
@@ -149,8 +149,18 @@ template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, He
   const int start = he_detail::peak_index(gv, value_of(c));
   he_detail::Walk<T> w{exp(he_detail::log_term(g, log(g), c, start))};
   if constexpr (std::is_same_v<T, double>) {
-    if (w.sum > 1e-280) he_detail::walk_by_ratios(gv, value_of(c), start, rel_tol, w);
-    else he_detail::walk_by_logs(g, c, start, rel_tol, w);
+    if (w.sum > 1e-280) {
+      he_detail::walk_by_ratios(gv, c, start, rel_tol, w);
+    } else {
+      // The first term underflows or nearly: the same ratio walk on t_m/t_start (each ≲ 1 from the
+      // peak, as in he_log_series), scaled back at the end. The bounds are relative to the sum,
+      // so the walk stops where a walk of the terms themselves would; a log walk would pay an
+      // exp, a log and an lgamma a term.
+      he_detail::Walk<double> r{1.0};
+      he_detail::walk_by_ratios(gv, c, start, rel_tol, r);
+      if (stats) *stats = {r.terms, (r.up_bound + r.down_bound) / r.sum};
+      return std::exp(he_detail::log_term(g, std::log(g), c, start) + std::log(r.sum));
+    }
   } else {
     he_detail::walk_by_logs(g, c, start, rel_tol, w);
   }

@@ -21,8 +21,10 @@ inline constexpr std::size_t kP22Block = 32;
 void gaussian_d_block(double norm, double m, const double* c, double* out);
 // GTR (ndf/gtr.h): norm / s^γ, s = α² c² + (1 − c)(1 + c); 0 at c ≤ 0.
 void gtr_d_block(double norm, double alpha, double gamma, const double* c, double* out);
-// GTR's P22 at kP22Block slopes x: D(c) c⁴ with c² = 1/(1 + x), as Gtr::P22.
+// GTR's P22 at kP22Block slopes x: D(c) c⁴ with c² = 1/(1 + x), as Gtr::P22 (s^γ by exp and log).
 void gtr_p22_block(double norm, double alpha, double gamma, const double* x, double* out);
+// The Gaussian's P22 at kP22Block slopes x: D(c) c⁴ with c² = 1/(1 + x), as Gaussian::P22.
+void gaussian_p22_block(double norm, double m, const double* x, double* out);
 // SGD (ndf/sgd.h): K e^{−t − p ln t}/π/c⁴, t = α + tan²θ/α; 0 at c ≤ 0.
 void sgd_d_block(double K, double alpha, double p, const double* c, double* out);
 // Blinn-Phong (ndf/blinn_phong.h): (N + 2)/(2π) c^N; 0 at c ≤ 0.

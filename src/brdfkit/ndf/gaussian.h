@@ -73,6 +73,12 @@ template <class T> struct Gaussian {
     gaussian_d_block(norm, m, c, out);
   }
   T P22(const T& x) const { return p22_from_d(*this, x); }
+  // P22 at the kP22Block slopes x[0 … kP22Block), for the Smith integral's nodes.
+  void P22_block(const double* x, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    gaussian_p22_block(norm, m, x, out);
+  }
 
   Vec3d sample(const Vec2d& u) const
     requires std::is_same_v<T, double>

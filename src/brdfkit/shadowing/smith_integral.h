@@ -61,7 +61,7 @@ template <class T> T s_minus_atan(const T& s) {
 }
 
 inline constexpr double kPanelWidth = 0.5;  // in w = log s
-inline constexpr int kGaussPoints = 7;
+inline constexpr int kGaussPoints = 7;  // odd: the rule's middle point is at abscissa 0
 
 // ∫ g over [lo, hi] by Gauss-Legendre on panels of width kPanelWidth laid from `hi` downwards
 // (so a finite edge at `hi` is a panel edge), skipping panels where g is negligible.
@@ -89,31 +89,39 @@ template <class T, class GBatch> T integrate_log_panels_batched(const GBatch& g,
   using Rule = boost::math::quadrature::gauss<double, kGaussPoints>;
   const auto& xs = Rule::abscissa();
   const auto& ws = Rule::weights();
-  // log of an edge value, floored at the cut, to measure how steep a panel is.
+  // log of an edge value, floored at the cut, to measure how steep a panel is; a panel's upper
+  // edge is the next one's lower edge, so each log is taken once.
   auto log_edge = [&](int j) { return std::log(std::max(edge[j], cut)); };
+  int logged = -1;  // the edge whose log is in log_lo
+  double log_lo = 0;
   struct Piece {
     double mid, half;
   };
   std::vector<Piece> pieces;
+  pieces.reserve(size_t(n_panels));
   for (int j = 0; j < n_panels; ++j) {
     // A panel next to an active one is integrated too: a feature narrower than the scan step
     // between two negligible edge values would otherwise be lost.
     if (!(active(j) || active(j - 1) || active(j + 1))) continue;
     // Steep panels (sharp cut-offs such as exp(−x^p) with large p, a step of width ~1/(2p) in w)
     // are split so that each piece spans at most a factor e⁴ of the integrand.
-    const int n = std::clamp(static_cast<int>(std::ceil(std::abs(log_edge(j + 1) - log_edge(j)) / 4.0)), 1, 32);
+    const double log_j = logged == j ? log_lo : log_edge(j);
+    log_lo = log_edge(j + 1);
+    logged = j + 1;
+    const int n = std::clamp(static_cast<int>(std::ceil(std::abs(log_lo - log_j) / 4.0)), 1, 32);
     const double width = kPanelWidth / n, half = 0.5 * width;
     for (int piece = 0; piece < n; ++piece) pieces.push_back({panel_lo(j) + (piece + 0.5) * width, half});
   }
   // The rule's points, piece by piece: the middle one (abscissa 0) once, the others as ± pairs.
-  at.clear();
+  at.resize(pieces.size() * kGaussPoints);
+  double* point = at.data();
   for (const Piece& p : pieces)
     for (size_t i = 0; i < xs.size(); ++i) {
       if (xs[i] == 0.0) {
-        at.push_back(p.mid);
+        *point++ = p.mid;
       } else {
-        at.push_back(p.mid + p.half * xs[i]);
-        at.push_back(p.mid - p.half * xs[i]);
+        *point++ = p.mid + p.half * xs[i];
+        *point++ = p.mid - p.half * xs[i];
       }
     }
   g(at, value);

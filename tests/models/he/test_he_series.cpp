@@ -55,7 +55,7 @@ TEST(HeSeries, TruncationErrorWithinItsBound) {
 
 // Doubles walk the series by term ratios (one exp a term), Jets by logs: the same sum and the same
 // terms. The grid includes first terms that underflow (small g, c ≫ 1), where a ratio walk would
-// multiply 0 by e^{c/2} = ∞ and never stop: doubles fall back to the log walk there.
+// multiply 0 by e^{c/2} = ∞ and never stop: doubles walk the ratios of the terms to the first there.
 TEST(HeSeries, RatioWalkOfDoublesEqualsTheLogWalkOfJets) {
   using Jet = ceres::Jet<double, 1>;
   double worst = 0;
@@ -78,6 +78,28 @@ TEST(HeSeries, RatioWalkOfDoublesEqualsTheLogWalkOfJets) {
     }
   }
   std::printf("[ he series ] ratio walk vs log walk: worst relative difference %.3g\n", worst);
+}
+
+// Sums whose largest term lies below 1e-280 but which are still normal doubles: doubles walk the
+// terms' ratios to the first one and scale back (he_series), to within the reported bound of the
+// long-double reference.
+TEST(HeSeries, SumsNearUnderflowMatchTheReference) {
+  int compared = 0;
+  double worst = 0;
+  for (double g : {1e-3, 0.01, 0.3})
+    for (int k = 0; k <= 400; ++k) {
+      const double c = 1e3 * std::pow(10.0, k / 100.0);
+      const long double ref = reference_series(g, c);
+      if (!(ref > 1e-306L && ref < 1e-281L)) continue;
+      HeSeriesStats stats;
+      const double s = he_series(g, c, 1e-6, &stats);
+      const double rel = double(std::fabs((long double)s - ref) / ref);
+      EXPECT_LE(rel, stats.omitted_bound + 1e-12) << "g " << g << " c " << c;
+      worst = std::max(worst, rel);
+      ++compared;
+    }
+  std::printf("[ he series ] sums in (1e-306, 1e-281): %d compared, worst relative error %.3g\n", compared, worst);
+  EXPECT_GE(compared, 10);
 }
 
 // log S where S lies below the smallest double (far from the peak of a rough surface, where the
