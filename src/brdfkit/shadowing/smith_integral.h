@@ -63,40 +63,32 @@ template <class T> T s_minus_atan(const T& s) {
 inline constexpr double kPanelWidth = 0.5;  // in w = log s
 inline constexpr int kGaussPoints = 7;  // odd: the rule's middle point is at abscissa 0
 
-// ∫ g over [lo, hi] by Gauss-Legendre on panels of width kPanelWidth laid from `hi` downwards
-// (so a finite edge at `hi` is a panel edge), skipping panels where g is negligible.
-// g is called on batches: g(w, out) sets out[k] = g(w[k]) for every point of w (out resized), so
-// that a distribution with a vector P22 evaluates the scan and then the rule's points together.
-template <class T, class GBatch> T integrate_log_panels_batched(const GBatch& g, double lo, double hi) {
-  const int n_panels = static_cast<int>(std::ceil((hi - lo) / kPanelWidth));
+// A piece of a panel, integrated by the Gauss-Legendre rule: its middle and half width in w.
+struct Piece {
+  double mid, half;
+};
+
+// The pieces to integrate, from |g| at the edges of the panels laid from `hi` downwards (edge
+// j + 1 − n_panels at hi − j·kPanelWidth), skipping panels where g is negligible. Non-finite edge
+// values count as 0.
+inline std::vector<Piece> active_pieces(std::vector<double>& edge, double hi) {
+  const int n_panels = static_cast<int>(edge.size()) - 1;
   auto panel_lo = [&](int j) { return hi - (n_panels - j) * kPanelWidth; };
-  std::vector<double> at(size_t(n_panels) + 1);
-  for (int j = 0; j <= n_panels; ++j) at[size_t(j)] = panel_lo(j);
-  std::vector<T> value;
-  g(at, value);
-  std::vector<double> edge(size_t(n_panels) + 1);
   double gmax = 0.0;
-  for (int j = 0; j <= n_panels; ++j) {
-    edge[j] = std::abs(scalar(value[size_t(j)]));
-    if (!std::isfinite(edge[j])) edge[j] = 0.0;
-    gmax = std::max(gmax, edge[j]);
+  for (double& e : edge) {
+    if (!std::isfinite(e)) e = 0.0;
+    gmax = std::max(gmax, e);
   }
-  if (!(gmax > 0.0)) return T(0);
+  if (!(gmax > 0.0)) return {};
   // Floored at the smallest normal double: 1e-14·gmax underflows to 0 for gmax below ~2e-294, and
   // log_edge would then subtract −∞ from −∞ (a NaN cast to int). Below that floor g is negligible.
   const double cut = std::max(1e-14 * gmax, std::numeric_limits<double>::min());
   auto active = [&](int j) { return j >= 0 && j < n_panels && (edge[j] > cut || edge[j + 1] > cut); };
-  using Rule = boost::math::quadrature::gauss<double, kGaussPoints>;
-  const auto& xs = Rule::abscissa();
-  const auto& ws = Rule::weights();
   // log of an edge value, floored at the cut, to measure how steep a panel is; a panel's upper
   // edge is the next one's lower edge, so each log is taken once.
   auto log_edge = [&](int j) { return std::log(std::max(edge[j], cut)); };
   int logged = -1;  // the edge whose log is in log_lo
   double log_lo = 0;
-  struct Piece {
-    double mid, half;
-  };
   std::vector<Piece> pieces;
   pieces.reserve(size_t(n_panels));
   for (int j = 0; j < n_panels; ++j) {
@@ -112,6 +104,25 @@ template <class T, class GBatch> T integrate_log_panels_batched(const GBatch& g,
     const double width = kPanelWidth / n, half = 0.5 * width;
     for (int piece = 0; piece < n; ++piece) pieces.push_back({panel_lo(j) + (piece + 0.5) * width, half});
   }
+  return pieces;
+}
+
+// ∫ g over [lo, hi] by Gauss-Legendre on panels of width kPanelWidth laid from `hi` downwards
+// (so a finite edge at `hi` is a panel edge), skipping panels where g is negligible.
+// g is called on batches: g(w, out) sets out[k] = g(w[k]) for every point of w (out resized), so
+// that a distribution with a vector P22 evaluates the scan and then the rule's points together.
+template <class T, class GBatch> T integrate_log_panels_batched(const GBatch& g, double lo, double hi) {
+  const int n_panels = static_cast<int>(std::ceil((hi - lo) / kPanelWidth));
+  std::vector<double> at(size_t(n_panels) + 1);
+  for (int j = 0; j <= n_panels; ++j) at[size_t(j)] = hi - (n_panels - j) * kPanelWidth;
+  std::vector<T> value;
+  g(at, value);
+  std::vector<double> edge(at.size());
+  for (size_t j = 0; j < at.size(); ++j) edge[j] = std::abs(scalar(value[j]));
+  const std::vector<Piece> pieces = active_pieces(edge, hi);
+  using Rule = boost::math::quadrature::gauss<double, kGaussPoints>;
+  const auto& xs = Rule::abscissa();
+  const auto& ws = Rule::weights();
   // The rule's points, piece by piece: the middle one (abscissa 0) once, the others as ± pairs.
   at.resize(pieces.size() * kGaussPoints);
   double* point = at.data();
