@@ -1,4 +1,6 @@
 // The `brdfkit` command line: one executable, git-style subcommands.
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -47,10 +49,21 @@ int print_usage_error(const std::vector<CLI::App*>& subs, const CLI::ParseError&
   return print_error(prefix, message + "; see " + prefix + " --help", 2);
 }
 
+// A fit allocates and frees its per-block buffers (hundreds of KB to MB each) on every evaluation.
+// Above glibc's mmap threshold each one is mapped afresh and every page faults in again: 1.2 s of a
+// 9.7 s fit's CPU (colodur_napoli's SGD-Bagher fit, system time 1.34 → 0.15 s). Serving them from
+// the heap, and not trimming it between evaluations, reuses the same pages; peak RSS is unchanged.
+void keep_freed_blocks() {
+  constexpr int kThreshold = 32 << 20;  // glibc's largest mmap threshold (mallopt(3))
+  mallopt(M_MMAP_THRESHOLD, kThreshold);
+  mallopt(M_TRIM_THRESHOLD, 2 * kThreshold);
+}
+
 }  // namespace brdfkit::cli
 
 int main(int argc, char** argv) {
   using namespace brdfkit::cli;
+  keep_freed_blocks();
   CLI::App app{"brdfkit: fit, check, sample and compare analytic BRDF models on measured reflectance"};
   app.set_version_flag("--version", std::string("brdfkit ") + BRDFKIT_VERSION);
   app.require_subcommand(1);

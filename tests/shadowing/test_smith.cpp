@@ -81,18 +81,22 @@ template <class Ndf> double worst_vector_difference(const std::vector<std::vecto
 }
 
 // Over the Smith tables' boxes: GTR's α from 1e-3 to 2 and γ from 0.1 to 10, the Gaussian's m
-// from 1e-3 to 1.5.
+// from 1e-3 to 1.5, SGD's α from 1e-4 to 2 and p from 0.05 to 1.9.
 TEST(Smith, VectorIntegrandAgreesWithThePointByPointIntegral) {
-  std::vector<std::vector<double>> gtr, gaussian;
+  std::vector<std::vector<double>> gtr, gaussian, sgd;
   for (double a : {1e-3, 0.01, 0.1, 0.5, 0.9, 0.999, 1.5, 2.0})
     for (double g : {0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 6.0, 10.0}) gtr.push_back({a, g});
   for (double m : {1e-3, 0.01, 0.05, 0.2, 0.5, 1.0, 1.5}) gaussian.push_back({m});
+  for (double a : {1e-4, 0.01, 0.1, 0.5, 2.0})
+    for (double p : {0.05, 0.5, 1.0, 1.5, 1.9}) sgd.push_back({a, p});
   const double e_gtr = worst_vector_difference<Gtr<double>>(gtr);
   const double e_gaussian = worst_vector_difference<Gaussian<double>>(gaussian);
-  std::printf("Λ, vector integrand vs point by point: max relative difference GTR %.3g, Gaussian %.3g\n", e_gtr,
-              e_gaussian);
+  const double e_sgd = worst_vector_difference<Sgd<double>>(sgd);
+  std::printf("Λ, vector integrand vs point by point: max relative difference GTR %.3g, Gaussian %.3g, SGD %.3g\n",
+              e_gtr, e_gaussian, e_sgd);
   EXPECT_LT(e_gtr, 1e-12);
   EXPECT_LT(e_gaussian, 1e-12);
+  EXPECT_LT(e_sgd, 1e-12);
 }
 
 // Max |ΔG1| over θ ∈ [0°, 89°] (1° steps) and α from 0.01 to 1, against the closed form.

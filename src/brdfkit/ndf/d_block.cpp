@@ -54,6 +54,14 @@ BRDFKIT_VECTOR_KERNEL void gtr_p22_block(double norm, double alpha, double gamma
   }
 }
 
+BRDFKIT_VECTOR_KERNEL void sgd_p22_block(double K, double alpha, double p, const double* __restrict x,
+                                         double* __restrict out) {
+  for (std::size_t k = 0; k < kP22Block; ++k) {
+    const double t = alpha + x[k] / alpha;
+    out[k] = K * exp(-t - p * log(t)) / kPi;  // seed 000 §4.2
+  }
+}
+
 BRDFKIT_VECTOR_KERNEL void sgd_d_block(double K, double alpha, double p, const double* __restrict c,
                                        double* __restrict out) {
   for (std::size_t k = 0; k < kDBlock; ++k) {

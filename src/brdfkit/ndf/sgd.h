@@ -38,6 +38,12 @@ template <class T> struct Sgd {
     const T t = alpha + x / alpha;
     return K * exp(-t - p * log(t)) / T(kPi);
   }
+  // P22 at the kP22Block slopes x[0 … kP22Block), for the Smith integral's nodes.
+  void P22_block(const double* x, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    sgd_p22_block(K, alpha, p, x, out);
+  }
   T D(const T& cos_theta) const {
     if (!(cos_theta > T(0))) return T(0);
     const T c2 = cos_theta * cos_theta;
