@@ -147,7 +147,8 @@ template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, He
     return T(0);  // a perfectly smooth surface has no directional-diffuse part (He 1991 §4)
   }
   const int start = he_detail::peak_index(gv, value_of(c));
-  he_detail::Walk<T> w{exp(he_detail::log_term(g, log(g), c, start))};
+  const T log_first = he_detail::log_term(g, log(g), c, start);
+  he_detail::Walk<T> w{exp(log_first)};
   if constexpr (std::is_same_v<T, double>) {
     if (w.sum > 1e-280) {
       he_detail::walk_by_ratios(gv, c, start, rel_tol, w);
@@ -159,7 +160,7 @@ template <class T> T he_series(const T& g, const T& c, double rel_tol = 1e-6, He
       he_detail::Walk<double> r{1.0};
       he_detail::walk_by_ratios(gv, c, start, rel_tol, r);
       if (stats) *stats = {r.terms, (r.up_bound + r.down_bound) / r.sum};
-      return std::exp(he_detail::log_term(g, std::log(g), c, start) + std::log(r.sum));
+      return std::exp(log_first + std::log(r.sum));
     }
   } else {
     he_detail::walk_by_logs(g, c, start, rel_tol, w);

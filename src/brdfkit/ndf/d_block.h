@@ -24,9 +24,9 @@ void gtr_d_block(double norm, double alpha, double gamma, const double* c, doubl
 // GTR's P22 at kP22Block slopes x: D(c) c⁴ with c² = 1/(1 + x), as Gtr::P22 (s^γ by exp and log).
 void gtr_p22_block(double norm, double alpha, double gamma, const double* x, double* out);
 // The Gaussian's P22 at kP22Block slopes x: D(c) c⁴ with c² = 1/(1 + x), as Gaussian::P22.
+void gaussian_p22_block(double norm, double m, const double* x, double* out);
 // SGD's P22 at kP22Block slopes x: K e^{−t − p ln t}/π, t = α + x/α, as Sgd::P22.
 void sgd_p22_block(double K, double alpha, double p, const double* x, double* out);
-void gaussian_p22_block(double norm, double m, const double* x, double* out);
 // SGD (ndf/sgd.h): K e^{−t − p ln t}/π/c⁴, t = α + tan²θ/α; 0 at c ≤ 0.
 void sgd_d_block(double K, double alpha, double p, const double* c, double* out);
 // Blinn-Phong (ndf/blinn_phong.h): (N + 2)/(2π) c^N; 0 at c ≤ 0.
