@@ -8,7 +8,7 @@ namespace brdfkit {
 BRDFKIT_VECTOR_KERNEL void HeSeriesTable::interpolate_block(const double* __restrict g, const double* __restrict c,
                                                            double* __restrict s) const {
   // Locals: the stores to s must not make the compiler reload the table's members.
-  const double* __restrict nodes = r_.data();
+  const double* __restrict nodes = r_;
   const double x0 = x0_;
   const int nx = nx_, ny = ny_;
   for (std::size_t k = 0; k < kBlock; ++k) {

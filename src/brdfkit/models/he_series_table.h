@@ -16,7 +16,9 @@
 // surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000.
 // Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace brdfkit {
@@ -30,8 +32,18 @@ class HeSeriesTable {
   // 1e-6 jumps by up to that much where its term count changes, which makes such a difference
   // wrong by O(1): enough to send vch_golden_yellow's He fit to a minimum 1 % worse.
   static constexpr double kSummedTolerance = 1e-10;
-  // Built on first use (≈ 0.4 s of CPU, in parallel; a function-local static, so thread-safe).
+  // The table, whose nodes are compiled in (a function-local static, so thread-safe).
   static const HeSeriesTable& get();
+
+  // The nodes r(x0 + i·step x, j·step y), i < columns, j < rows, in [x][y] order. The build runs
+  // compute_nodes once (cmake/generators/he_series_table.cpp) and compiles its output in, so that a
+  // process does not sum 200 k series (~0.3 s of CPU) before its first look-up.
+  struct Nodes {
+    int columns, rows;
+    std::vector<double> r;
+  };
+  static Nodes compute_nodes();  // he_series_table_nodes.cpp
+  std::span<const double> nodes() const { return {r_, std::size_t(nx_) * std::size_t(ny_)}; }
 
   // S(g, c): from the table inside its domain, else the series summed to kSummedTolerance.
   double operator()(double g, double c) const;
@@ -52,6 +64,7 @@ class HeSeriesTable {
   static constexpr double kPerStepX = 1 / kStepX, kPerStepY = 1 / kStepY;  // nodes per unit of x and y
 
   HeSeriesTable();
+  static double first_x() { return std::log(kGMin) - kStepX; }  // x0: see x0_
   // Weights of the cubic Lagrange interpolant through the nodes at −1, 0, 1, 2, at t ∈ [0, 1].
   // (Products with 1/6, not divisions by 6: a division costs several multiplications.)
   static void lagrange4(double t, double w[4]) {
@@ -86,7 +99,7 @@ class HeSeriesTable {
   int nx_ = 0, ny_ = 0;
   // [x][y]: a batch's pairs mostly share g (a metric's grid varies Δφ fastest, which leaves the
   // cosines unchanged), so a block's look-ups walk along y within 4 columns of the table.
-  std::vector<double> r_;
+  const double* r_ = nullptr;
 };
 
 }  // namespace brdfkit

@@ -44,6 +44,21 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
   EXPECT_LT(worst, 5e-7);
 }
 
+// The build sums the nodes once and compiles them in (cmake/generators/he_series_table.cpp): they
+// are the nodes compute_nodes sums here. The same code on the same machine gives the same bits;
+// 1e-13 allows for a build machine whose vector exp is another variant (SSE2 against AVX2).
+TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
+  const HeSeriesTable::Nodes want = HeSeriesTable::compute_nodes();
+  const std::span<const double> got = HeSeriesTable::get().nodes();
+  ASSERT_EQ(got.size(), want.r.size());
+  ASSERT_EQ(got.size(), size_t(want.columns) * size_t(want.rows));
+  double worst = 0;
+  for (std::size_t k = 0; k < got.size(); ++k) worst = std::max(worst, std::abs(got[k] - want.r[k]));
+  std::printf("He series table: %zu compiled-in nodes, worst difference to the computed nodes %.3g\n", got.size(),
+              worst);
+  EXPECT_LE(worst, 1e-13);
+}
+
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
   for (const auto& [g, c] : {std::pair{0.5, 3.0}, std::pair{1.9, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 50001.0}}) {

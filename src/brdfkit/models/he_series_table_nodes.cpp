@@ -1,0 +1,40 @@
+// HeSeriesTable's nodes (he_series_table.h), summed from He et al. 1991 Eq. 78's series. The build
+// runs this once (cmake/generators/he_series_table.cpp); the library keeps it for the test that
+// compares the compiled-in nodes with it.
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+
+#include "brdfkit/models/he_series.h"
+#include "brdfkit/models/he_series_table.h"
+
+namespace brdfkit {
+
+namespace {
+
+constexpr double kNodeTolerance = 1e-10;
+
+}  // namespace
+
+// One column below g = kGMin and two nodes beyond the top of each axis, so that a look-up inside the
+// domain has its 4 × 4 nodes; at y = 0 (the first row) a look-up in the first cell takes the cubic
+// through the rows 0 … 3.
+HeSeriesTable::Nodes HeSeriesTable::compute_nodes() {
+  const double x0 = first_x();
+  Nodes n{int(std::ceil((std::log(kGMax) - x0) / kStepX)) + 3, int(std::ceil(std::log1p(kYMax) / kStepY)) + 3, {}};
+  n.r.resize(size_t(n.columns) * size_t(n.rows));
+  // Isolated: a caller inside a parallel loop must not take one of that loop's tasks here.
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(0, n.columns, [&](int i) {
+      const double g = std::exp(x0 + i * kStepX);
+      for (int j = 0; j < n.rows; ++j) {
+        const double y = std::expm1(j * kStepY);
+        n.r[size_t(i) * size_t(n.rows) + size_t(j)] = he_log_series(g, g * y, kNodeTolerance) + std::log(g) + y;
+      }
+    });
+  });
+  return n;
+}
+
+}  // namespace brdfkit
