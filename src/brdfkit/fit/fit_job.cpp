@@ -41,7 +41,8 @@ FitJobResult fit_and_report(const Model& model, MetricStore& store, const std::s
                             const FitSettings& settings, const std::vector<std::string>& report,
                             const Progress& progress) {
   FitJobResult r = run_fit_job(model, store, file, sha256, settings, progress);
-  r.record.metrics = report_metrics(store, model, r.record.values, report, MetricOptions{settings.coarsen});
+  r.record.metrics =
+      report_metrics(store, model, r.record.values, report, MetricOptions{settings.coarsen}, r.record.fit_metric);
   return r;
 }
 

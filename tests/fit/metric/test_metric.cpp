@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "brdfkit/fit/metric/metric.h"
+#include "brdfkit/fit/metric/metric_report.h"
 #include "brdfkit/fit/metric/metric_store.h"
 #include "brdfkit/models/lambert.h"
 #include "support/fit_test_util.h"
@@ -163,6 +164,37 @@ TEST(Metric, AGridNotKeptGivesTheKeptValue) {
   dropped.coarsen = 4;
   dropped.domain = MetricDomain::Grid;  // the grid, looked up in a table without a cell
   EXPECT_THROW(make_metric("ngan", empty, dropped), MetricUndefined);
+}
+
+// A fit's report keeps the samples of the metric it fitted under (the store holds them already)
+// and evaluates every other metric chunk by chunk, nothing kept: the values of a report that keeps
+// every domain, to the last bit.
+TEST(Metric, AFitsReportKeepsOnlyTheFittedMetric) {
+  const Model& ggx = model_by_name("cook-torrance-ggx");
+  const ParamValues truth =
+      make_values(ggx, {{"kd", Rgb(0.1, 0.2, 0.3)}, {"ks", Rgb(0.8, 0.6, 0.5)}, {"alpha", Rgb::Constant(0.2)}});
+  const ParamValues other =
+      make_values(ggx, {{"kd", Rgb(0.12, 0.2, 0.25)}, {"ks", Rgb(0.7, 0.6, 0.6)}, {"alpha", Rgb::Constant(0.25)}});
+  const AnalyticMeasured data(ggx, truth);
+  const std::vector<std::string> ids = {"ngan", "bagher", "low-e1"};
+  const MetricOptions kept{2};
+  MetricOptions dropped{2};
+  dropped.keep = false;
+  MetricStore fitted(data), every(data);
+  fitted.metric("ngan", kept);  // the fit's
+  const std::vector<MetricReport> a = report_metrics(fitted, ggx, other, ids, kept, "ngan");
+  const std::vector<MetricReport> b = report_metrics(every, ggx, other, ids, kept);
+  ASSERT_EQ(a.size(), ids.size());
+  for (size_t i = 0; i < ids.size(); ++i) {
+    ASSERT_TRUE(a[i].value && b[i].value) << ids[i];
+    EXPECT_EQ(*a[i].value, *b[i].value) << ids[i];
+    EXPECT_TRUE(every.holds(ids[i], kept)) << ids[i];
+  }
+  EXPECT_FALSE(fitted.holds("ngan", dropped));
+  for (const char* id : {"bagher", "low-e1"}) {
+    EXPECT_FALSE(fitted.holds(id, kept)) << id;
+    EXPECT_TRUE(fitted.holds(id, dropped)) << id;
+  }
 }
 
 TEST(Metric, UnknownIdAndEmptyDomainAreInputErrors) {

@@ -7,12 +7,15 @@
 namespace brdfkit::fit {
 
 std::vector<MetricReport> report_metrics(MetricStore& store, const Model& model, const ParamValues& values,
-                                         const std::vector<std::string>& ids, const MetricOptions& opt) {
+                                         const std::vector<std::string>& ids, const MetricOptions& opt,
+                                         const std::string& fitted) {
   const std::vector<std::string> all = ids.empty() ? metric_ids() : ids;
   std::vector<MetricReport> out;
   for (const std::string& id : all) {
+    MetricOptions o = opt;
+    if (!fitted.empty()) o.keep = id == fitted;
     try {
-      out.push_back({id, store.metric(id, opt)->value(model, values), ""});
+      out.push_back({id, store.metric(id, o)->value(model, values), ""});
     } catch (const MetricUndefined& e) {
       out.push_back({id, std::nullopt, e.what()});
     }

@@ -8,7 +8,7 @@ std::shared_ptr<const Metric> MetricStore::metric(std::string_view id, const Met
   std::shared_ptr<Entry> e;
   {
     const std::lock_guard lock(mu_);
-    auto& slot = metrics_[Key{std::string(id), opt.coarsen, int(opt.domain), opt.keep}];
+    auto& slot = metrics_[key_of(id, opt)];
     if (!slot) slot = std::make_shared<Entry>();
     e = slot;
   }
@@ -22,6 +22,11 @@ std::shared_ptr<const Metric> MetricStore::metric(std::string_view id, const Met
   });
   if (e->error) std::rethrow_exception(e->error);
   return e->metric;
+}
+
+bool MetricStore::holds(std::string_view id, const MetricOptions& opt) {
+  const std::lock_guard lock(mu_);
+  return metrics_.contains(key_of(id, opt));
 }
 
 double MetricStore::max_albedo(int coarsen) {

@@ -28,11 +28,16 @@ class MetricStore {
   // Metric `id` with these options, built on first use. Thread-safe: concurrent callers of one
   // key wait for a single build; a build's InputError is rethrown to every caller of that key.
   std::shared_ptr<const Metric> metric(std::string_view id, const MetricOptions& opt = {});
+  // Whether metric `id` with these options has been asked of the store (built, or being built).
+  bool holds(std::string_view id, const MetricOptions& opt);
   // max_measured_albedo (metric_definition.h) at a coarsening, integrated once.
   double max_albedo(int coarsen);
 
  private:
   using Key = std::tuple<std::string, int, int, bool>;  // metric id, coarsening, domain choice, keep
+  static Key key_of(std::string_view id, const MetricOptions& opt) {
+    return {std::string(id), opt.coarsen, int(opt.domain), opt.keep};
+  }
   struct Entry {
     std::once_flag built;
     std::shared_ptr<const Metric> metric;
