@@ -28,6 +28,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "he_series_table_gen: cannot write %s\n", tmp.c_str());
     return 1;
   }
-  std::filesystem::rename(tmp, out);
+  std::error_code error;
+  std::filesystem::rename(tmp, out, error);
+  if (error) {
+    std::fprintf(stderr, "he_series_table_gen: cannot rename %s to %s: %s\n", tmp.c_str(), out.c_str(),
+                 error.message().c_str());
+    return 1;
+  }
   return 0;
 }

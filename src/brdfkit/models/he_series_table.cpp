@@ -18,8 +18,6 @@ const HeSeriesTable& HeSeriesTable::get() {
 HeSeriesTable::HeSeriesTable()
     : x0_(first_x()), nx_(kHeSeriesTableColumns), ny_(kHeSeriesTableRows), r_(kHeSeriesTableNodes) {}
 
-bool HeSeriesTable::covers(double g, double c) const { return g >= kGMin && g <= kGMax && c >= 0 && c <= kYMax * g; }
-
 double HeSeriesTable::operator()(double g, double c) const {
   if (!covers(g, c)) return he_series(g, c, kSummedTolerance);
   const double y = c / g;

@@ -47,8 +47,8 @@ class HeSeriesTable {
 
   // S(g, c): from the table inside its domain, else the series summed to kSummedTolerance.
   double operator()(double g, double c) const;
-  // Whether (g, c) is read from the table.
-  bool covers(double g, double c) const;
+  // Whether (g, c) is read from the table (inline: block() asks it of every lane).
+  bool covers(double g, double c) const { return g >= kGMin && g <= kGMax && c >= 0 && c <= kYMax * g; }
 
   // The look-ups a batch makes at once.
   static constexpr std::size_t kBlock = 64;
