@@ -3,8 +3,9 @@
 # fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
-# Measured (2 cores, idle): ngan only 0.21 s wall, 0.39 s CPU, 177 MB; every metric 0.49 s wall,
-# 0.93 s CPU, 585 MB. Targets: 0.15 s and 1 s.
+# Measured (2 cores, idle): ngan only 0.48 s wall, 0.85 s CPU, 178 MB; every metric 0.76–0.85 s
+# wall, 1.4–1.6 s CPU, 178 MB. On a machine whose page faults cost ~7 µs (~42 k of them, the sys
+# time of 0.3 s); 0.21 s and 0.38 s CPU for ngan only where they cost ~2 µs. Targets: 0.15 s and 1 s.
 # Reproduce with (warm build):
 #   bash bench/merl_fit_metrics.sh [OUT_DIR]        (BUILD_DIR= overrides)
 set -euo pipefail
