@@ -45,8 +45,9 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
 }
 
 // The build sums the nodes once and compiles them in (cmake/generators/he_series_table.cpp): they
-// are the nodes compute_nodes sums here. The same code on the same machine gives the same bits;
-// 1e-13 allows for a build machine whose vector exp is another variant (SSE2 against AVX2).
+// are the nodes compute_nodes sums here. The generator is never instrumented; where the library is
+// (the sanitizers' build), or a machine's vector exp is another variant, each of a node's few hundred
+// ratios may round differently: 1e-12 in r = log S + …, measured 1.1e-13 there, 0 otherwise.
 TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
   const HeSeriesTable::Nodes want = HeSeriesTable::compute_nodes();
   const std::span<const double> got = HeSeriesTable::get().nodes();
@@ -56,7 +57,7 @@ TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
   for (std::size_t k = 0; k < got.size(); ++k) worst = std::max(worst, std::abs(got[k] - want.r[k]));
   std::printf("He series table: %zu compiled-in nodes, worst difference to the computed nodes %.3g\n", got.size(),
               worst);
-  EXPECT_LE(worst, 1e-13);
+  EXPECT_LE(worst, 1e-12);
 }
 
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
