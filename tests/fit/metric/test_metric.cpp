@@ -137,16 +137,24 @@ TEST(Metric, HpRmseMatchesItsSum) {
   EXPECT_NEAR(make_metric("hp-rmse", data, {4}).value(p.model, p.fitted), expected, expected * 1e-12);
 }
 
-// A metric only reported (MetricOptions::keep = false) looks its grid up again at each value():
-// the kept metric's number to the last bit, nothing kept, the same refusal of an empty domain,
-// and a store entry of its own (a fit under the kept one must not get it).
-TEST(Metric, AGridNotKeptGivesTheKeptValue) {
+// GGX data from known parameters, and another parameter set to evaluate metrics at.
+struct GgxData {
   const Model& ggx = model_by_name("cook-torrance-ggx");
   const ParamValues truth =
       make_values(ggx, {{"kd", Rgb(0.1, 0.2, 0.3)}, {"ks", Rgb(0.8, 0.6, 0.5)}, {"alpha", Rgb::Constant(0.2)}});
   const ParamValues other =
       make_values(ggx, {{"kd", Rgb(0.12, 0.2, 0.25)}, {"ks", Rgb(0.7, 0.6, 0.6)}, {"alpha", Rgb::Constant(0.25)}});
-  const AnalyticMeasured data(ggx, truth);
+  const AnalyticMeasured data{ggx, truth};
+};
+
+// A metric only reported (MetricOptions::keep = false) looks its grid up again at each value():
+// the kept metric's number to the last bit, nothing kept, the same refusal of an empty domain,
+// and a store entry of its own (a fit under the kept one must not get it).
+TEST(Metric, AGridNotKeptGivesTheKeptValue) {
+  const GgxData g;
+  const Model& ggx = g.ggx;
+  const ParamValues& other = g.other;
+  const AnalyticMeasured& data = g.data;
   MetricOptions kept{2}, dropped{2};
   dropped.keep = false;
   for (const char* id : {"ngan", "bagher", "low-e1", "low-e2"}) {
@@ -170,12 +178,10 @@ TEST(Metric, AGridNotKeptGivesTheKeptValue) {
 // and evaluates every other metric chunk by chunk, nothing kept: the values of a report that keeps
 // every domain, to the last bit.
 TEST(Metric, AFitsReportKeepsOnlyTheFittedMetric) {
-  const Model& ggx = model_by_name("cook-torrance-ggx");
-  const ParamValues truth =
-      make_values(ggx, {{"kd", Rgb(0.1, 0.2, 0.3)}, {"ks", Rgb(0.8, 0.6, 0.5)}, {"alpha", Rgb::Constant(0.2)}});
-  const ParamValues other =
-      make_values(ggx, {{"kd", Rgb(0.12, 0.2, 0.25)}, {"ks", Rgb(0.7, 0.6, 0.6)}, {"alpha", Rgb::Constant(0.25)}});
-  const AnalyticMeasured data(ggx, truth);
+  const GgxData g;
+  const Model& ggx = g.ggx;
+  const ParamValues& other = g.other;
+  const AnalyticMeasured& data = g.data;
   const std::vector<std::string> ids = {"ngan", "bagher", "low-e1"};
   const MetricOptions kept{2};
   MetricOptions dropped{2};
