@@ -10,10 +10,11 @@ namespace brdfkit {
 
 inline constexpr std::size_t kHeBlock = HeSeriesTable::kBlock;
 
-// The shape terms of a block's pairs (HeTorrance::PairTerms' numbers), and den = π cosθi cosθr.
+// The shape terms of a block's pairs (HeTorrance::PairTerms' numbers), den = π cosθi cosθr, and
+// the series' c/g (HeTorrance::series_ratio).
 struct HeBlockPairs {
   double vv[kHeBlock], vz[kHeBlock], vxy2[kHeBlock], sigma[kHeBlock], geometry[kHeBlock], shadow[kHeBlock],
-      den[kHeBlock];
+      den[kHeBlock], ratio[kHeBlock];
 };
 
 // One channel's part of Eq. 75 at each pair of a block: the series' arguments g and c, the factor

@@ -1,5 +1,6 @@
 #include "brdfkit/models/he_series_table.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "brdfkit/models/he_series.h"
@@ -26,9 +27,26 @@ double HeSeriesTable::operator()(double g, double c) const {
 }
 
 void HeSeriesTable::block(const double* g, const double* c, double* s) const {
-  interpolate_block(g, c, s);
+  double ratio[kBlock];
+  for (std::size_t k = 0; k < kBlock; ++k) {
+    // operator()'s c/g where the table covers (g, c); clamped lanes are replaced below.
+    const double gk = std::clamp(g[k], kGMin, kGMax);
+    ratio[k] = std::clamp(c[k], 0.0, kYMax * gk) / gk;
+  }
+  Rows r;
+  rows(ratio, r);
+  interpolate_block(r, g, s);
   for (std::size_t k = 0; k < kBlock; ++k)
     if (!covers(g[k], c[k])) s[k] = he_series(g[k], c[k], kSummedTolerance);
+}
+
+void HeSeriesTable::block_at(const Rows& rows, const double* g, double* s) const {
+  interpolate_block(rows, g, s);
+  for (std::size_t k = 0; k < kBlock; ++k) {
+    const double ratio = rows.ratio[k];
+    if (!(g[k] >= kGMin && g[k] <= kGMax && ratio >= 0 && ratio <= kYMax))
+      s[k] = he_series(g[k], ratio * g[k], kSummedTolerance);
+  }
 }
 
 }  // namespace brdfkit

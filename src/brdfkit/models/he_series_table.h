@@ -58,6 +58,21 @@ class HeSeriesTable {
   // series summed where the table does not cover the pair. A value depends on its pair alone.
   void block(const double* g, const double* c, double* s) const;
 
+  // The y side of a block's look-ups: x = log g and y = log(1 + c/g) are the table's coordinates,
+  // so pairs that share c/g share their row weights, and their log1p. He's channels do: g and c
+  // both scale with k² = (2π/λ)² (HeTorrance::unsummed_of), c/g = τ² v_xy²/(4 σ² v_z²).
+  struct Rows {
+    double ratio[kBlock];   // c/g as given (block_at's fallback sums the series at c = ratio · g)
+    double y[kBlock];       // c/g clamped into the table's domain
+    int j[kBlock];          // the row below y
+    double w[4][kBlock];    // lagrange4's weights of the rows j − 1 … j + 2
+  };
+  // Rows of the kBlock ratios c/g (he_series_block.cpp).
+  void rows(const double* ratio, Rows& out) const;
+  // S at the kBlock pairs (g[k], ratio[k] · g[k]): block's look-up with the rows given. Within
+  // 1e-12 relative of operator() (its c/g an ulp away), summed where the table does not cover.
+  void block_at(const Rows& rows, const double* g, double* s) const;
+
  private:
   static constexpr double kGMin = 2, kGMax = 1e4, kYMax = 1000;  // c/g ≤ kYMax
   static constexpr double kStepX = 0.03, kStepY = 0.01;
@@ -90,8 +105,8 @@ class HeSeriesTable {
     }
     return r;
   }
-  // block's interpolation at every lane, each (g, c) first clamped into the domain (he_series_block.cpp).
-  void interpolate_block(const double* g, const double* c, double* s) const;
+  // block_at's interpolation at every lane, each g first clamped into the domain (he_series_block.cpp).
+  void interpolate_block(const Rows& rows, const double* g, double* s) const;
 
   // x = log g of the first column: one below g = kGMin, so that a look-up inside the domain has
   // its 4 × 4 nodes.

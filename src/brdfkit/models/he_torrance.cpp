@@ -62,18 +62,22 @@ void set_unused(HeBlockPairs& b, std::size_t k) {
   b.geometry[k] = 4;
   b.shadow[k] = 1;
   b.den[k] = kPi;
+  b.ratio[k] = 0;
 }
 
 // ρ of `count` channels (p[i]: the parameters of channel channel[i], all with the σ0 and τ of
 // p[0]) at n pairs, block by block: the shape terms pair by pair, once for every channel
 // (PairWalker), then each channel's Eq. 75 but the series (he_channel_block) and the series
-// (HeSeriesTable::block) of the whole block at once, then the products.
+// (HeSeriesTable::block_at, the table's rows once for every channel) of the whole block at once,
+// then the products.
 void eval_channels(const double* const* p, const int* channel, int count, std::size_t n, const double* wi_x,
                    const double* wi_y, const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                    double* const* out) {
   const HeSeriesTable& table = HeSeriesTable::get();
   PairWalker walk(p[0]);
+  const double tau = p[0][HeTorrance::kTau];
   HeBlockPairs pairs;
+  HeSeriesTable::Rows rows;
   HeBlockChannel lanes[3];
   bool above[kHeBlock];
   for (std::size_t start = 0; start < n; start += kHeBlock) {
@@ -94,11 +98,13 @@ void eval_channels(const double* const* p, const int* channel, int count, std::s
       pairs.geometry[k] = t.geometry;
       pairs.shadow[k] = t.shadow;
       pairs.den[k] = kPi * wi.z() * wo.z();  // as HeTorrance::unsummed
+      pairs.ratio[k] = HeTorrance::series_ratio(tau, t.vxy2, t.sigma, t.v.z());
     }
+    table.rows(pairs.ratio, rows);
     for (int i = 0; i < count; ++i) {
       HeBlockChannel& l = lanes[i];
       he_channel_block(p[i], channel[i], pairs, l);
-      table.block(l.g, l.c, l.series);
+      table.block_at(rows, l.g, l.series);
       const double kd_pi = p[i][HeTorrance::kKd] * kInvPi, ks = p[i][HeTorrance::kKs];
       for (std::size_t k = 0; k < m; ++k) {
         const HeTorrance::Unsummed<double> u{l.g[k], l.c[k], l.front[k], l.scale, pairs.den[k]};

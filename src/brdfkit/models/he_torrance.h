@@ -166,6 +166,13 @@ struct HeTorrance {
     return u;
   }
 
+  // c/g of unsummed_of, τ² v_xy² / (4 σ² v_z²) with v unit-less: the same in every channel, so
+  // the channels of a pair share the table's y side (HeSeriesTable::rows).
+  static double series_ratio(double tau, double vxy2, double sigma, double vz) {
+    const double sigma_vz = sigma * vz;
+    return 0.25 * tau * tau * vxy2 / (sigma_vz * sigma_vz);  // Eq. 78–79: c / g, k² cancelled
+  }
+
   // The same with the slope terms of wi and wo given (both directions above the horizon).
   template <class T>
   static T directional_diffuse_with(const T* p, int c, const Vec3<T>& wi, const Vec3<T>& wo,

@@ -113,6 +113,44 @@ TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
   EXPECT_GT(outside, 1000);
 }
 
+// He's three channels share c/g at a pair (their g and c both scale with k²): one set of rows
+// serves every channel's g, each value within 1e-12 relative of the scalar look-up at c = ratio · g
+// inside the domain, and that series summed outside it.
+TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
+  const HeSeriesTable& table = HeSeriesTable::get();
+  constexpr std::size_t kB = HeSeriesTable::kBlock;
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst = 0;
+  int outside = 0;
+  for (int b = 0; b < 300; ++b) {
+    double ratio[kB], g[3][kB], s[kB];
+    for (std::size_t k = 0; k < kB; ++k) {
+      ratio[k] = std::expm1(u(rng) * std::log1p(3000.0));  // c/g to 3000: inside and outside
+      g[0][k] = 0.1 * std::pow(2e5, u(rng));
+      g[1][k] = g[0][k] * 1.3;  // (λ_R / λ_G)², roughly
+      g[2][k] = g[0][k] * 1.7;
+    }
+    HeSeriesTable::Rows rows;
+    table.rows(ratio, rows);
+    for (const auto& gc : g) {
+      table.block_at(rows, gc, s);
+      for (std::size_t k = 0; k < kB; ++k) {
+        const double c = ratio[k] * gc[k], want = table(gc[k], c);
+        if (!table.covers(gc[k], c)) {
+          ASSERT_EQ(s[k], he_series(gc[k], c, HeSeriesTable::kSummedTolerance)) << "g " << gc[k] << " c " << c;
+          ++outside;
+        } else if (want > 1e-290) {
+          worst = std::max(worst, std::abs(s[k] / want - 1));
+        }
+      }
+    }
+  }
+  std::printf("He series table: shared rows vs scalar, worst relative %.3g (%d outside the domain)\n", worst, outside);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(outside, 1000);
+}
+
 // Outside its domain the table sums the series, whose value jumps where its term count changes.
 // The fitter's forward differences step by 1e-6 relative (fit/engine/finite_difference.h), so a
 // jump must stay below 1e-9 of S: it then errs by ≤ 1e-3 of a unit slope of log S in log g.
