@@ -4,7 +4,7 @@
 // shadowing/smith_integrand_block.cpp, measured/merl_row_cells.cpp, models/he_series_block.cpp,
 // models/he_series_ratios.cpp, models/he_batch_block.cpp): never include this from a header.
 //
-// glibc's libmvec holds vector variants of acos, atan, atan2, exp, log, log1p and pow (_ZGVbN2v_exp
+// glibc's libmvec holds vector variants of acos, atan, atan2, erfc, exp, log, log1p and pow (_ZGVbN2v_exp
 // for SSE2, _ZGVdN4v_exp for AVX2, …, within 4 ulp of the scalar functions). math.h declares them only
 // under -ffast-math, which would change every other expression too. Declaring them here lets GCC
 // vectorize the loops of the files that include this, and no other call of libm in the program.
@@ -15,6 +15,7 @@ extern "C" {
 __attribute__((simd("notinbranch"))) double acos(double) noexcept;
 __attribute__((simd("notinbranch"))) double atan(double) noexcept;
 __attribute__((simd("notinbranch"))) double atan2(double, double) noexcept;
+__attribute__((simd("notinbranch"))) double erfc(double) noexcept;
 __attribute__((simd("notinbranch"))) double exp(double) noexcept;
 __attribute__((simd("notinbranch"))) double log(double) noexcept;
 __attribute__((simd("notinbranch"))) double log1p(double) noexcept;

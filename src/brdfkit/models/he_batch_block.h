@@ -24,6 +24,22 @@ struct HeBlockChannel {
   double scale = 0;  // Eq. 78's factor, the same at every pair
 };
 
+// What depends on a pair's two cosines alone, kHePairLanes pairs at once: S(θi)S(θr) (he_shadowing.h,
+// Eq. 23–25) and the effective roughness σ (he_effective_roughness.h, Eq. 80–83), with glibc's
+// vector erfc and exp and the vector Lambert W of he_z0_ratio_lanes. Within 1e-14 relative of
+// HeSlopeTerms and he_effective_roughness_of (tests/models/he/test_he_eval_batch.cpp) for
+// cosines in [kHePairMinCos, 1]; below it σ's f0 could overflow f0², and the caller takes the scalar terms.
+inline constexpr std::size_t kHePairLanes = 8;
+inline constexpr double kHePairMinCos = 1e-100;
+void he_pair_shape_lanes(double sigma0, double tau, const double* cos_i, const double* cos_o, double* shadow,
+                         double* sigma);
+
+// x = sqrt(W0(f0²)), the root of x e^{x²/2} = f0 (he_effective_roughness.h), at kHePairLanes values
+// f0 in [0, 1e150]: Winitzki's approximation of W0 polished by two Halley steps, within 1e-15 of
+// Boost's lambert_w0 (tests/models/he/test_he_components.cpp). Boost's is scalar; this one runs
+// on vector exp and log1p.
+void he_z0_ratio_lanes(const double* f0, double* x);
+
 // HeTorrance::unsummed_of at every pair of the block, for channel c with parameters p: the same
 // arithmetic to the bit (no libm call: square roots and divisions are exact in any width).
 void he_channel_block(const double* p, int c, const HeBlockPairs& pairs, HeBlockChannel& out);

@@ -14,42 +14,71 @@ namespace brdfkit {
 
 namespace {
 
-// A value kept while the input it is a function of repeats: the same bits as computing it anew.
-template <class V> class KeptValue {
+// S(θi)S(θr) and σ, which depend on a pair's two cosines alone, for the pairs of a block: a pair
+// whose cosines are the previous pair's takes its values (a metric's grid varies Δφ fastest, so
+// there they change once per row), the others are computed kHePairLanes at a time.
+class PairShapes {
  public:
-  template <class F> const V& at(double input, F&& compute) {
-    if (!(input == input_)) {
-      value_ = compute(input);
-      input_ = input;
+  explicit PairShapes(const double* p) : sigma0_(p[HeTorrance::kSigma0]), tau_(p[HeTorrance::kTau]) {}
+
+  // shadow[k] and sigma[k] of the pairs k < m that have above[k].
+  void fill(const bool* above, const double* cos_i, const double* cos_o, std::size_t m, double* shadow,
+            double* sigma) {
+    constexpr std::size_t kCarried = kHeBlock;  // the last pair of an earlier block
+    std::size_t fresh[kHeBlock], source[kHeBlock], n = 0, from = kCarried;
+    for (std::size_t k = 0; k < m; ++k) {
+      if (!above[k]) continue;
+      if (!(cos_i[k] == last_i_ && cos_o[k] == last_o_)) {
+        last_i_ = cos_i[k];
+        last_o_ = cos_o[k];
+        fresh[n++] = from = k;
+      }
+      source[k] = from;
     }
-    return value_;
+    for (std::size_t first = 0; first < n; first += kHePairLanes)
+      compute(fresh + first, std::min(kHePairLanes, n - first), cos_i, cos_o, shadow, sigma);
+    for (std::size_t k = 0; k < m; ++k) {
+      if (!above[k] || source[k] == k) continue;
+      shadow[k] = source[k] == kCarried ? last_shadow_ : shadow[source[k]];
+      sigma[k] = source[k] == kCarried ? last_sigma_ : sigma[source[k]];
+    }
+    for (std::size_t k = m; k-- > 0;)
+      if (above[k]) {
+        last_shadow_ = shadow[k];
+        last_sigma_ = sigma[k];
+        break;
+      }
   }
 
  private:
-  double input_ = std::numeric_limits<double>::quiet_NaN();  // equal to no input
-  V value_{};
-};
-
-// The shape terms of the pairs of a batch, the slope terms of wi and wo kept while their cosines
-// repeat and σ while Ki + Kr repeats.
-class PairWalker {
- public:
-  explicit PairWalker(const double* p) : sigma0_(p[HeTorrance::kSigma0]), tau_(p[HeTorrance::kTau]) {}
-
-  // Both directions above the horizon.
-  HeTorrance::PairTerms<double> operator()(const Vec3d& wi, const Vec3d& wo) {
-    auto slope = [&](double cos_theta) { return HeSlopeTerms<double>(cos_theta, sigma0_, tau_); };
-    const HeSlopeTerms<double>& si = slope_i_.at(wi.z(), slope);
-    const HeSlopeTerms<double>& so = slope_o_.at(wo.z(), slope);
-    const double s = sigma_.at(si.k_factor + so.k_factor,
-                               [&](double k_sum) { return he_effective_roughness_of(k_sum, sigma0_); });  // Eq. 80
-    return HeTorrance::pair_terms(wi, wo, si.shadowing * so.shadowing, s);  // Eq. 23
+  // The pairs index[0 … count) (count ≤ kHePairLanes) through the vector lanes, padded with the
+  // first; a pair with a cosine below kHePairMinCos through the scalar terms.
+  void compute(const std::size_t* index, std::size_t count, const double* cos_i, const double* cos_o,
+               double* shadow, double* sigma) const {
+    double ci[kHePairLanes], co[kHePairLanes], s[kHePairLanes], g[kHePairLanes];
+    for (std::size_t l = 0; l < kHePairLanes; ++l) {
+      const std::size_t k = index[l < count ? l : 0];
+      const bool lanes = cos_i[k] >= kHePairMinCos && cos_o[k] >= kHePairMinCos;
+      ci[l] = lanes ? cos_i[k] : 1.0;
+      co[l] = lanes ? cos_o[k] : 1.0;
+    }
+    he_pair_shape_lanes(sigma0_, tau_, ci, co, s, g);
+    for (std::size_t l = 0; l < count; ++l) {
+      const std::size_t k = index[l];
+      if (cos_i[k] >= kHePairMinCos && cos_o[k] >= kHePairMinCos) {
+        shadow[k] = s[l];
+        sigma[k] = g[l];
+        continue;
+      }
+      const HeSlopeTerms<double> si(cos_i[k], sigma0_, tau_), so(cos_o[k], sigma0_, tau_);
+      shadow[k] = si.shadowing * so.shadowing;                                  // Eq. 23
+      sigma[k] = he_effective_roughness_of(si.k_factor + so.k_factor, sigma0_);  // Eq. 80
+    }
   }
 
- private:
   double sigma0_, tau_;
-  KeptValue<HeSlopeTerms<double>> slope_i_, slope_o_;
-  KeptValue<double> sigma_;
+  double last_i_ = std::numeric_limits<double>::quiet_NaN(), last_o_ = last_i_;  // equal to no cosine
+  double last_shadow_ = 0, last_sigma_ = 0;
 };
 
 // A lane of a block that holds no pair above the horizon: the numbers of wi = wo = ẑ with σ = 1,
@@ -67,14 +96,14 @@ void set_unused(HeBlockPairs& b, std::size_t k) {
 
 // ρ of `count` channels (p[i]: the parameters of channel channel[i], all with the σ0 and τ of
 // p[0]) at n pairs, block by block: the shape terms pair by pair, once for every channel
-// (PairWalker), then each channel's Eq. 75 but the series (he_channel_block) and the series
+// (PairShapes), then each channel's Eq. 75 but the series (he_channel_block) and the series
 // (HeSeriesTable::block_at, the table's rows once for every channel) of the whole block at once,
 // then the products.
 void eval_channels(const double* const* p, const int* channel, int count, std::size_t n, const double* wi_x,
                    const double* wi_y, const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                    double* const* out) {
   const HeSeriesTable& table = HeSeriesTable::get();
-  PairWalker walk(p[0]);
+  PairShapes shapes(p[0]);
   const double tau = p[0][HeTorrance::kTau];
   HeBlockPairs pairs;
   HeSeriesTable::Rows rows;
@@ -82,21 +111,20 @@ void eval_channels(const double* const* p, const int* channel, int count, std::s
   bool above[kHeBlock];
   for (std::size_t start = 0; start < n; start += kHeBlock) {
     const std::size_t m = std::min(kHeBlock, n - start);
+    for (std::size_t k = 0; k < kHeBlock; ++k) above[k] = k < m && wi_z[start + k] > 0 && wo_z[start + k] > 0;
+    shapes.fill(above, wi_z + start, wo_z + start, m, pairs.shadow, pairs.sigma);
     for (std::size_t k = 0; k < kHeBlock; ++k) {
       const std::size_t j = start + k;
-      above[k] = k < m && wi_z[j] > 0 && wo_z[j] > 0;
       if (!above[k]) {
         set_unused(pairs, k);
         continue;
       }
       const Vec3d wi(wi_x[j], wi_y[j], wi_z[j]), wo(wo_x[j], wo_y[j], wo_z[j]);
-      const HeTorrance::PairTerms<double> t = walk(wi, wo);
+      const HeTorrance::PairTerms<double> t = HeTorrance::pair_terms(wi, wo, pairs.shadow[k], pairs.sigma[k]);
       pairs.vv[k] = t.vv;
       pairs.vz[k] = t.v.z();
       pairs.vxy2[k] = t.vxy2;
-      pairs.sigma[k] = t.sigma;
       pairs.geometry[k] = t.geometry;
-      pairs.shadow[k] = t.shadow;
       pairs.den[k] = kPi * wi.z() * wo.z();  // as HeTorrance::unsummed
       pairs.ratio[k] = HeTorrance::series_ratio(tau, t.vxy2, t.sigma, t.v.z());
     }

@@ -5,6 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include <random>
+#include <vector>
+
+#include "brdfkit/models/he_batch_block.h"
 #include "brdfkit/models/he_effective_roughness.h"
 #include "brdfkit/models/he_shadowing.h"
 #include "brdfkit/ndf/beckmann.h"
@@ -74,6 +78,59 @@ TEST(HeEffectiveRoughness, LambertWSolvesEq81) {
   std::printf("[ he z0 ] worst relative residual of x e^(x^2/2) = f0, f0 in [1e-14, 1e6]: %.3g\n", worst);
   EXPECT_LE(worst, 1e-14);
   EXPECT_EQ(he_detail::solve_z0_ratio(0.0), 0.0);
+}
+
+// The vector lanes' x = sqrt(W0(f0²)) (Winitzki's start, two Halley steps) against Boost's
+// lambert_w0 up to f0 = 1e150, where f0² nears the largest double, and x = f0 below 1e-150.
+TEST(HeEffectiveRoughness, VectorLanesAreBoostsLambertW) {
+  std::vector<double> f{0.0, 1e-320, 1e-100, 1.0000001e-100, 1e-30};
+  for (double v = 1e-14; v < 1e150; v *= 1.013) f.push_back(v);
+  while (f.size() % kHePairLanes) f.push_back(1.0);
+  double worst = 0;
+  for (std::size_t b = 0; b < f.size(); b += kHePairLanes) {
+    double x[kHePairLanes];
+    he_z0_ratio_lanes(f.data() + b, x);
+    for (std::size_t l = 0; l < kHePairLanes; ++l) {
+      // Where f0² underflows (Boost then gives 0), x = f0 (1 − f0²/2 + …) is f0.
+      if (f[b + l] < 1e-150) {
+        ASSERT_EQ(x[l], f[b + l]);
+        continue;
+      }
+      worst = std::max(worst, std::abs(x[l] / he_detail::solve_z0_ratio(f[b + l]) - 1));
+    }
+  }
+  std::printf("[ he z0 ] vector lanes vs Boost's lambert_w0, f0 in [1e-320, 1e150]: worst relative %.3g\n", worst);
+  EXPECT_LE(worst, 1e-15);
+}
+
+// S(θi)S(θr) and σ of the vector lanes against HeSlopeTerms and he_effective_roughness_of: from
+// normal incidence to cosines of 1e-100, smooth to rough surfaces.
+TEST(HeEffectiveRoughness, VectorPairLanesAreTheScalarTerms) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst = 0;
+  for (const auto& [sigma0, tau] : {std::pair{0.005, 50.0}, std::pair{0.18, 3.0}, std::pair{1.5, 0.5}, std::pair{2.0, 8.0}}) {
+    for (int b = 0; b < 200; ++b) {
+      double ci[kHePairLanes], co[kHePairLanes], shadow[kHePairLanes], sigma[kHePairLanes];
+      for (std::size_t l = 0; l < kHePairLanes; ++l) {
+        ci[l] = u(rng);
+        co[l] = std::pow(10.0, -100 * u(rng) * u(rng) * u(rng));  // down to grazing
+      }
+      if (b == 0) ci[0] = co[1] = 1.0, ci[2] = co[2] = kHePairMinCos, ci[3] = co[3] = 1 - 1e-13;
+      he_pair_shape_lanes(sigma0, tau, ci, co, shadow, sigma);
+      for (std::size_t l = 0; l < kHePairLanes; ++l) {
+        const HeSlopeTerms<double> si(ci[l], sigma0, tau), so(co[l], sigma0, tau);
+        const double want_shadow = si.shadowing * so.shadowing;
+        const double want_sigma = he_effective_roughness_of(si.k_factor + so.k_factor, sigma0);
+        ASSERT_GT(want_sigma, 0) << ci[l] << " " << co[l];
+        worst = std::max(worst, std::abs(sigma[l] / want_sigma - 1));
+        if (want_shadow > 1e-300) worst = std::max(worst, std::abs(shadow[l] / want_shadow - 1));
+        else ASSERT_LE(shadow[l], 1e-300) << ci[l] << " " << co[l];
+      }
+    }
+  }
+  std::printf("[ he pair ] vector lanes vs scalar shadowing and sigma: worst relative %.3g\n", worst);
+  EXPECT_LE(worst, 1e-14);
 }
 
 }  // namespace

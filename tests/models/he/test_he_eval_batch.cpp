@@ -1,6 +1,7 @@
-// HeTorrance::eval_batch keeps what depends on the cosines alone (the slope terms of wi and wo, σ)
-// while they repeat, as they do through a metric chunk (one incidence per chunk, Δφ fastest), and
-// looks the series up a block of pairs at a time (HeSeriesTable::block): it must give eval's values
+// HeTorrance::eval_batch keeps what depends on the cosines alone (the shadowing of wi and wo, σ)
+// while they repeat, as they do through a metric chunk (one incidence per chunk, Δφ fastest),
+// computes it for new cosines eight pairs at a time (he_pair_shape_lanes), and looks the series
+// up a block of pairs at a time (HeSeriesTable::block_at): it must give eval's values
 // within 1e-12 relative, since tables are tabulated through eval and fits run through eval_batch.
 // eval_batch_rgb, which computes the shape terms once for R, G and B, must give eval_batch's to
 // the bit. Its eval_batch_from, which fits use for differences in η and k, must give eval_batch's
