@@ -27,7 +27,7 @@ struct HeBlockChannel {
 // What depends on a pair's two cosines alone, kHePairLanes pairs at once: S(θi)S(θr) (he_shadowing.h,
 // Eq. 23–25) and the effective roughness σ (he_effective_roughness.h, Eq. 80–83), with glibc's
 // vector erfc and exp and the vector Lambert W of he_z0_ratio_lanes. Within 1e-14 relative of
-// HeSlopeTerms and he_effective_roughness_of (tests/models/he/test_he_eval_batch.cpp) for
+// HeSlopeTerms and he_effective_roughness_of (tests/models/he/test_he_components.cpp) for
 // cosines in [kHePairMinCos, 1]; below it σ's f0 could overflow f0², and the caller takes the scalar terms.
 inline constexpr std::size_t kHePairLanes = 8;
 inline constexpr double kHePairMinCos = 1e-100;

@@ -188,8 +188,9 @@ struct HeTorrance {
 
   // eval for n pairs. What depends on the cosines alone is kept while they repeat (a metric's grid
   // holds one incidence per chunk and varies Δφ fastest, fit/metric/metric_grid.h, so the slope
-  // terms and σ are computed once per (θi, θo) there), and the series of a block of pairs is looked
-  // up at once (HeSeriesTable::block): eval's values within 1e-12 relative.
+  // terms and σ are computed once per (θi, θo) there, eight new pairs at a time on vector lanes,
+  // he_batch_block.h), and the series of a block of pairs is looked up at once
+  // (HeSeriesTable::block_at): eval's values within 1e-12 relative.
   static void eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                          const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                          double* out);
