@@ -27,12 +27,8 @@ double HeSeriesTable::operator()(double g, double c) const {
 }
 
 void HeSeriesTable::block(const double* g, const double* c, double* s) const {
-  double ratio[kBlock];
-  for (std::size_t k = 0; k < kBlock; ++k) {
-    // operator()'s c/g where the table covers (g, c); clamped lanes are replaced below.
-    const double gk = std::clamp(g[k], kGMin, kGMax);
-    ratio[k] = std::clamp(c[k], 0.0, kYMax * gk) / gk;
-  }
+  double ratio[kBlock];  // operator()'s c/g where the table covers (g, c); other lanes are replaced below
+  for (std::size_t k = 0; k < kBlock; ++k) ratio[k] = c[k] / std::clamp(g[k], kGMin, kGMax);
   Rows r;
   rows(ratio, r);
   interpolate_block(r, g, s);
@@ -43,9 +39,8 @@ void HeSeriesTable::block(const double* g, const double* c, double* s) const {
 void HeSeriesTable::block_at(const Rows& rows, const double* g, double* s) const {
   interpolate_block(rows, g, s);
   for (std::size_t k = 0; k < kBlock; ++k) {
-    const double ratio = rows.ratio[k];
-    if (!(g[k] >= kGMin && g[k] <= kGMax && ratio >= 0 && ratio <= kYMax))
-      s[k] = he_series(g[k], ratio * g[k], kSummedTolerance);
+    const double c = rows.ratio[k] * g[k];
+    if (!covers(g[k], c)) s[k] = he_series(g[k], c, kSummedTolerance);
   }
 }
 

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "brdfkit/core/vec.h"
 #include "brdfkit/models/he_series.h"
 #include "brdfkit/models/he_series_table.h"
 #include "brdfkit/models/he_torrance.h"
@@ -128,8 +129,10 @@ TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
     for (std::size_t k = 0; k < kB; ++k) {
       ratio[k] = std::expm1(u(rng) * std::log1p(3000.0));  // c/g to 3000: inside and outside
       g[0][k] = 0.1 * std::pow(2e5, u(rng));
-      g[1][k] = g[0][k] * 1.3;  // (λ_R / λ_G)², roughly
-      g[2][k] = g[0][k] * 1.7;
+      for (int ch = 1; ch < 3; ++ch) {  // g ∝ k² = (2π/λ)²
+        const double lambda_ratio = kChannelWavelengthUm[0] / kChannelWavelengthUm[ch];
+        g[ch][k] = g[0][k] * lambda_ratio * lambda_ratio;
+      }
     }
     HeSeriesTable::Rows rows;
     table.rows(ratio, rows);
