@@ -81,13 +81,15 @@ TEST(StallStop, StopsOnlyWhenAWindowGainedLessThanItsShare) {
 
 // Freudenstein and Roth's function (Moré, Garbow & Hillstrom 1981, problem 2) as an objective,
 // r = (−13 + x + ((5 − y) y − 2) y, −29 + x + ((y + 1) y − 14) y), recording the cost at every
-// point where derivatives were asked for.
+// point where derivatives were asked for, and every point evaluated.
 class FreudensteinRothObjective final : public Objective {
  public:
   std::vector<double> derivative_costs;
+  std::vector<Eigen::Vector2d> points;
   void reset(bool) override {}
   bool evaluate(const double* p, bool derivatives, ObjectiveValue& out, ParamValues&) override {
     const double x = p[0], y = p[1];
+    points.emplace_back(x, y);
     const Eigen::Vector2d r(-13 + x + ((5 - y) * y - 2) * y, -29 + x + ((y + 1) * y - 14) * y);
     out.cost = r.squaredNorm();
     if (derivatives) {
@@ -120,6 +122,42 @@ TEST(SolveLevel, DerivativesOnlyWhereAStepWasAccepted) {
   ASSERT_GE(c.size(), 2u);
   EXPECT_LE(c.size(), size_t(out.iterations) + 1);
   for (size_t k = 1; k < c.size(); ++k) EXPECT_LT(c[k], c[k - 1]) << "derivatives at evaluation " << k;
+}
+
+// A level refining the previous level's optimum starts from the trust region's radius that level
+// ended with: from a radius of 1e-3 (Levenberg-Marquardt's damping 1/radius = 1000) its first
+// trial step is short, where Ceres' default radius (1e4) takes nearly the Gauss-Newton step of
+// ~10. Both end in the same minimum (costs within 1e-6).
+TEST(SolveLevel, RefiningLevelStartsFromThePreviousLevelsRadius) {
+  const ParamTable table = {{"x", -20.0, 20.0, 0.5, Scope::Shared, false, "x"},
+                            {"y", -20.0, 20.0, -2.0, Scope::Shared, false, "y"}};
+  const SolverVariables vars(table, {false, false});
+  const Eigen::Vector2d start(0.5, -2.0);
+  auto run = [&](const LevelOutcome* previous, Eigen::Vector2d& first_trial, double& end_cost) {
+    auto inner = std::make_unique<FreudensteinRothObjective>();
+    const FreudensteinRothObjective& counted = *inner;
+    CachedObjective objective(std::move(inner), vars.size());
+    std::vector<double> x = {start.x(), start.y()};
+    const LevelOutcome out = solve_level(objective, vars, x, FitSettings{}, true, previous);
+    EXPECT_GE(counted.points.size(), 2u);
+    first_trial = counted.points.at(1);
+    end_cost = counted.derivative_costs.back();
+    std::printf("%s: first trial step %.3g, %d iterations, end (%.9g, %.9g) at cost %.12g, radius %.3g\n",
+                previous ? "refining" : "first", (first_trial - start).lpNorm<Eigen::Infinity>(), out.iterations,
+                x[0], x[1], end_cost, out.radius);
+    return out;
+  };
+  Eigen::Vector2d trial, trial_refining;
+  double end = 0, end_refining = 0;
+  const LevelOutcome first = run(nullptr, trial, end);
+  ASSERT_TRUE(first.usable);
+  EXPECT_GT(first.radius, 0.0);
+  EXPECT_GT((trial - start).lpNorm<Eigen::Infinity>(), 5.0);
+  LevelOutcome previous;
+  previous.radius = 1e-3;
+  ASSERT_TRUE(run(&previous, trial_refining, end_refining).usable);
+  EXPECT_LT((trial_refining - start).lpNorm<Eigen::Infinity>(), 0.05);
+  EXPECT_NEAR(end_refining, end, 1e-6 * end);
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ class CompressedCost final : public ceres::CostFunction {
 }  // namespace
 
 LevelOutcome solve_level(CachedObjective& objective, const SolverVariables& vars, std::vector<double>& x,
-                         const FitSettings& settings, bool last) {
+                         const FitSettings& settings, bool last, const LevelOutcome* previous) {
   const size_t n = vars.size();
   ceres::Problem::Options popt;
   popt.cost_function_ownership = ceres::TAKE_OWNERSHIP;
@@ -85,6 +85,13 @@ LevelOutcome solve_level(CachedObjective& objective, const SolverVariables& vars
   // the domain per variable) that a rejected trial throws away. Quadratic interpolation needs
   // only the trial's cost, and an accepted step's Jacobian is then computed once.
   so.line_search_interpolation_type = ceres::QUADRATIC;
+  // A level refining the previous level's optimum starts from the trust region that level ended
+  // with, not Ceres' default radius of 1e4. From that radius the first steps of a refining level
+  // reach far past the optimum nearby; the line search cuts each back, and Ceres judges it
+  // against the model's decrease for the whole step (trust_region_minimizer.cc, ceres-solver
+  // issue 187), so the radius only halves, step after step: vch_golden_yellow's He took 22
+  // steps on the whole grid, at ratios of 0.002-0.72, while its radius fell from 1e4 to 0.08.
+  if (previous && previous->radius > 0) so.initial_trust_region_radius = previous->radius;
   so.num_threads = 1;  // the objective is parallel inside
   StallStop stall;
   so.callbacks.push_back(&stall);
@@ -92,6 +99,7 @@ LevelOutcome solve_level(CachedObjective& objective, const SolverVariables& vars
   ceres::Solve(so, &problem, &summary);
   LevelOutcome out;
   out.iterations = int(summary.iterations.size()) - 1;
+  out.radius = summary.iterations.empty() ? 0.0 : summary.iterations.back().trust_region_radius;
   out.usable = summary.IsSolutionUsable();
   out.converged = summary.termination_type == ceres::CONVERGENCE || stall.stalled();
   out.message = stall.stalled() ? fmt::format("Stalled: the last {} steps lowered the cost by < {:g} relative.",

@@ -117,10 +117,12 @@ StartOutcome Engine::run_start(int start, const FitSettings& settings, std::mt19
   if (start == 0 && settings.scan_start && !vars_.empty()) x = scanned(x, scan_points);
   StartOutcome out;
   out.usable = true;
+  LevelOutcome previous;
   for (size_t level = 0; level < strides.size() && !vars_.empty() && out.usable; ++level) {
     const bool last = level + 1 == strides.size();
     set_stride(strides[level]);
-    const LevelOutcome r = solve_level(*objective_, vars_, x, settings, last);
+    const LevelOutcome r = solve_level(*objective_, vars_, x, settings, last, level > 0 ? &previous : nullptr);
+    previous = r;
     iterations += r.iterations;
     out.usable = r.usable;
     if (last) {
