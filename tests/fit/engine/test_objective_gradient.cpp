@@ -4,11 +4,13 @@
 // Fresnel ratio of Model::eval_batch_from), and GGX, whose shape is one shared roughness.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "brdfkit/core/pair_arrays.h"
 #include "brdfkit/fit/engine/linear_structure.h"
@@ -37,6 +39,7 @@ Domain make_domain(const Model& truth, const ParamValues& tp, size_t n) {
   return d;
 }
 
+// The domain as two blocks of unit weight, so the objective's partial sums are reduced across blocks.
 std::vector<SampleBlock> blocks_of(const Domain& d) {
   std::vector<SampleBlock> out;
   const size_t n = d.pairs.wi_x.size(), half = n / 2;
