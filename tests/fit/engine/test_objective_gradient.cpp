@@ -4,10 +4,8 @@
 // Fresnel ratio of Model::eval_batch_from), and GGX, whose shape is one shared roughness.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -15,6 +13,7 @@
 #include "brdfkit/core/pair_arrays.h"
 #include "brdfkit/fit/engine/linear_structure.h"
 #include "brdfkit/fit/engine/projected_objective.h"
+#include "support/merl_cases.h"
 
 namespace brdfkit::fit {
 namespace {
@@ -57,26 +56,11 @@ std::vector<SampleBlock> blocks_of(const Domain& d) {
   return out;
 }
 
-ParamValues with(const Model& model, const std::map<std::string, std::array<double, 3>>& set) {
-  ParamValues pv = ParamValues::defaults(model.params());
-  for (size_t p = 0; p < model.params().size(); ++p) {
-    const auto it = set.find(model.params()[p].name);
-    if (it != set.end())
-      for (int c = 0; c < 3; ++c) pv.values[size_t(c)][p] = it->second[size_t(c)];
-  }
-  return pv;
-}
-
 // Worst |Jᵀr − ½ ∂cost/∂x| over the variables, relative to the largest |Jᵀr|. The objective's own
 // derivatives are forward differences of step 1e-6 relative (finite_difference.h): ~1e-6.
 double gradient_error(const Model& model, const ParamValues& at, const Domain& d) {
   const LinearStructure s = probe_linear_structure(model, true);
-  std::vector<bool> inside(model.params().size(), false);
-  for (const LinearBasis& b : s.bases) {
-    inside[size_t(b.lin)] = true;
-    if (b.affine >= 0) inside[size_t(b.affine)] = true;
-  }
-  const SolverVariables vars(model.params(), inside);
+  const SolverVariables vars(model.params(), solved_inside(s, true));
   FitContext ctx{model, vars, Transform::Identity, blocks_of(d), 1, at};
   ProjectedObjective obj(ctx, s.bases);
   obj.reset(true);
@@ -105,17 +89,19 @@ double gradient_error(const Model& model, const ParamValues& at, const Domain& d
 
 TEST(ProjectedObjective, GradientIsHalfTheCostsDerivative) {
   const Model& he = model_by_name("he");
-  const ParamValues truth = with(he, {{"sigma0", {0.3, 0.3, 0.3}},
-                                      {"tau", {4, 4, 4}},
-                                      {"eta", {1.6, 1.7, 1.8}},
-                                      {"k", {0.1, 0.2, 0.3}},
-                                      {"kd", {0.3, 0.2, 0.1}}});
+  const ParamValues truth = test::with(he, {{"sigma0", Rgb::Constant(0.3)},
+                                            {"tau", Rgb::Constant(4)},
+                                            {"eta", Rgb(1.6, 1.7, 1.8)},
+                                            {"k", Rgb(0.1, 0.2, 0.3)},
+                                            {"kd", Rgb(0.3, 0.2, 0.1)}});
   const Domain d = make_domain(he, truth, 4000);
-  const ParamValues at = with(
-      he, {{"sigma0", {0.25, 0.25, 0.25}}, {"tau", {5, 5, 5}}, {"eta", {1.4, 2.0, 1.5}}, {"k", {0.3, 0.05, 0.5}}});
+  const ParamValues at = test::with(he, {{"sigma0", Rgb::Constant(0.25)},
+                                         {"tau", Rgb::Constant(5)},
+                                         {"eta", Rgb(1.4, 2.0, 1.5)},
+                                         {"k", Rgb(0.3, 0.05, 0.5)}});
   EXPECT_LT(gradient_error(he, at, d), 1e-5);
   const Model& ggx = model_by_name("cook-torrance-ggx");
-  EXPECT_LT(gradient_error(ggx, with(ggx, {{"alpha", {0.2, 0.2, 0.2}}}), d), 1e-5);
+  EXPECT_LT(gradient_error(ggx, test::with(ggx, {{"alpha", Rgb::Constant(0.2)}}), d), 1e-5);
 }
 
 }  // namespace

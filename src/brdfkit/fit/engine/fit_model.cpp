@@ -21,15 +21,6 @@ namespace brdfkit::fit {
 
 namespace {
 
-// Parameters the projected objective solves itself: the colours and those paired with them.
-std::vector<bool> solved_inside(const LinearStructure& s, bool project) {
-  std::vector<bool> out(s.paired.size(), false);
-  if (!project) return out;
-  for (int l : s.colours) out[size_t(l)] = true;
-  for (size_t p = 0; p < s.paired.size(); ++p) out[p] = out[p] || s.paired[p] >= 0;
-  return out;
-}
-
 struct StartOutcome {
   bool usable = false;
   double cost = 0;

@@ -97,6 +97,14 @@ LinearStructure probe_linear_structure(const Model& model, bool pair_affine) {
   return s;
 }
 
+std::vector<bool> solved_inside(const LinearStructure& s, bool project) {
+  std::vector<bool> out(s.paired.size(), false);
+  if (!project) return out;
+  for (int l : s.colours) out[size_t(l)] = true;
+  for (size_t p = 0; p < s.paired.size(); ++p) out[p] = out[p] || s.paired[p] >= 0;
+  return out;
+}
+
 std::vector<double> basis_params(const ParamValues& pv, int c, const std::vector<LinearBasis>& bases, size_t j) {
   std::vector<double> p = pv.values[size_t(c)];
   for (const LinearBasis& b : bases) p[size_t(b.lin)] = 0.0;

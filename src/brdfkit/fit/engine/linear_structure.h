@@ -55,6 +55,10 @@ struct LinearStructure {
 // InputError for more than kMaxBases bases when pairing (the projected sub-problem's limit).
 LinearStructure probe_linear_structure(const Model& model, bool pair_affine);
 
+// Parameters the projected objective solves itself (`project`): the colours and those paired with
+// them; none otherwise. SolverVariables' `solved_inside`.
+std::vector<bool> solved_inside(const LinearStructure& s, bool project);
+
 // Channel c's parameter vector of basis j at the shape of pv: colours 0 except the basis's own
 // (1), its paired parameter at the basis's bound.
 std::vector<double> basis_params(const ParamValues& pv, int c, const std::vector<LinearBasis>& bases, std::size_t j);
