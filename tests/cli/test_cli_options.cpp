@@ -528,7 +528,11 @@ TEST_F(CliOptions, FitAllPassesSeedAndPerChannelShapeToEachFit) {
   EXPECT_EQ(all_values(per), all_values(read_json(path("single_per.json"))));
   const auto seed3 = batch(" --seed 3 --per-channel-shape", "batch_per3");
   EXPECT_EQ(seed3["fit"]["seed"], 3);
-  EXPECT_NE(all_values(per), all_values(seed3));
+  // Start 0 (the scan's) wins under either seed; the random starts 1 and 2 differ, and so do
+  // the iterations they take.
+  std::printf("iterations of the 3 starts: seed 2 %d, seed 3 %d\n", per["fit"]["iterations"].get<int>(),
+              seed3["fit"]["iterations"].get<int>());
+  EXPECT_NE(per["fit"]["iterations"], seed3["fit"]["iterations"]);
 }
 
 fs::path envmap() { return test::data_dir() / "envmaps" / "studio.exr"; }

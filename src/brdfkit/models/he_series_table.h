@@ -91,7 +91,7 @@ class HeSeriesTable {
   }
   // r at the table coordinates fx = (log g − x0)/step x, fy = log(1 + c/g)/step y: the tensor-product
   // cubic through the 4 × 4 nodes around them. operator() and interpolate_block both read it here;
-  // always inlined, since a call left in interpolate_block's AVX2 clone keeps its loop scalar.
+  // always inlined, since a call left in interpolate_block's vector clones keeps their loops scalar.
   [[gnu::always_inline]] static double interpolate(const double* nodes, int nx, int ny, double fx, double fy) {
     const int i = std::min(std::max(int(fx), 1), nx - 3), j = std::min(std::max(int(fy), 1), ny - 3);
     double wx[4], wy[4];

@@ -1,8 +1,8 @@
 #pragma once
 // D over a fixed-size block of cosθh, for the batch loops (models/cook_torrance.h,
 // models/holzschuch_pacanowski.h): the distributions whose D calls acos, exp, log or pow run these
-// kernels, which call glibc's vector math (core/vector_kernel.h: AVX2 where the CPU has it, SSE2
-// otherwise) on kDBlock values at once, where the scalar D would call libm once per value
+// kernels, which call glibc's vector math (core/vector_kernel.h: AVX-512 or AVX2 where the CPU has
+// it, SSE2 otherwise) on kDBlock values at once, where the scalar D would call libm once per value
 // (measured in bench/bench_model_eval.cpp).
 // Each kernel is the scalar D's expression in the same order; only the libm calls differ, by at
 // most 4 ulp each, which an exp of a large argument magnifies: tests/ndf/test_d_block.cpp bounds

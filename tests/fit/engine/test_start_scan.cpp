@@ -62,24 +62,33 @@ TEST(StartScan, FindsTheDeepBasinAndNeverReturnsAWorsePointThanTheStart) {
   EXPECT_EQ(kept.cost, double_well(0.01));
 }
 
-// Per-channel variables of one parameter move together; non-finite costs never win; the result
-// is the same on every call.
-TEST(StartScan, ChannelsMoveTogetherNonFiniteLosesAndTheResultIsDeterministic) {
+// Per-channel variables of one parameter move together, then each alone, so that channels may
+// end on different grid points (He's η: one channel's best index lies above 1, another's below);
+// non-finite costs never win; the result is the same on every call.
+TEST(StartScan, ChannelsMoveTogetherThenEachAloneNonFiniteLosesAndTheResultIsDeterministic) {
   const ParamTable table = {spec(0, 1, 0.05), spec(0, 1e6, 100)};  // Rs (3 channels), N
   const std::vector<int> var_param = {0, 0, 0, 1};
-  int calls = 0;
+  std::vector<std::vector<double>> calls;
   const auto cost = [&](const std::vector<double>& x) {
-    ++calls;
-    EXPECT_EQ(x[0], x[1]);
-    EXPECT_EQ(x[1], x[2]);
+    calls.push_back(x);
     if (x[3] > 1e4) return std::nan("");
-    return std::pow(x[0] - 0.3, 2) + std::pow(std::log10(x[3]) - 2.5, 2);
+    return std::pow(x[0] - 0.3, 2) + std::pow(x[1] - 0.8, 2) + std::pow(x[2] - 0.1, 2) +
+           std::pow(std::log10(x[3]) - 2.5, 2);
   };
   const StartScan a = scan_start(table, var_param, {0.05, 0.05, 0.05, 100}, cost);
-  EXPECT_EQ(a.points, calls);
+  EXPECT_EQ(a.points, int(calls.size()));
+  // The joint sweep first: the 8 grid points of Rs with the three channels equal.
+  ASSERT_GT(calls.size(), 9u);
+  for (size_t i = 1; i <= 8; ++i) {
+    EXPECT_EQ(calls[i][0], calls[i][1]);
+    EXPECT_EQ(calls[i][1], calls[i][2]);
+  }
   EXPECT_LE(a.x[3], 1e4);
-  EXPECT_NEAR(a.x[0], 0.3125, 1e-15);  // the grid point nearest 0.3
+  EXPECT_NEAR(a.x[0], 0.3125, 1e-15);  // each channel at the grid point nearest its minimum
+  EXPECT_NEAR(a.x[1], 0.8125, 1e-15);
+  EXPECT_NEAR(a.x[2], 0.0625, 1e-15);
   EXPECT_NEAR(std::log10(a.x[3]), 2.5, 0.125 + 1e-12);
+  calls.clear();
   const StartScan b = scan_start(table, var_param, {0.05, 0.05, 0.05, 100}, cost);
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.cost, b.cost);

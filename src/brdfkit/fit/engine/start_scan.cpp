@@ -41,17 +41,23 @@ StartScan scan_start(const ParamTable& table, const std::vector<int>& var_param,
                      const std::function<double(const std::vector<double>&)>& cost, int sweeps) {
   StartScan best{start, cost(start), 1};
   if (!std::isfinite(best.cost)) best.cost = std::numeric_limits<double>::infinity();
-  // The parameters to scan, in table order, each with its solver variables.
+  // The groups of variables to scan, in table order: each parameter's variables together, then,
+  // for a per-channel parameter, each of them alone.
   std::vector<std::vector<size_t>> groups;
   std::vector<std::vector<double>> grids;
   for (size_t p = 0; p < table.size(); ++p) {
     std::vector<size_t> vars;
     for (size_t v = 0; v < var_param.size(); ++v)
       if (var_param[v] == int(p)) vars.push_back(v);
-    std::vector<double> grid = scan_grid(table[p]);
+    const std::vector<double> grid = scan_grid(table[p]);
     if (vars.empty() || grid.empty()) continue;
-    groups.push_back(std::move(vars));
-    grids.push_back(std::move(grid));
+    groups.push_back(vars);
+    grids.push_back(grid);
+    if (vars.size() > 1)
+      for (size_t v : vars) {
+        groups.push_back({v});
+        grids.push_back(grid);
+      }
   }
   // One parameter: a second sweep would repeat the first.
   if (groups.size() == 1) sweeps = std::min(sweeps, 1);

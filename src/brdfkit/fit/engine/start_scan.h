@@ -9,8 +9,10 @@
 //     log-spaced where the bounds span ≥ kLogSpan (widths, exponents, sharpness: their effect is
 //     multiplicative) and linear otherwise (shapes like SGD's p, Lafortune's C, Fresnel F0);
 //   - coordinate sweeps: each parameter in table order is scanned with the others at the best
-//     point so far (a parameter's three per-channel variables move together), then the next
-//     parameter; sweeps repeat (at most `sweeps`) while they improve the cost;
+//     point so far, then the next parameter; a per-channel parameter's three variables first
+//     move together, then each alone, since channels may need different basins (vch_golden_yellow's
+//     He: η 2.23 in green, 0.058 in red, ngan 0.2017; its three η moving together only: 0.2348);
+//     sweeps repeat (at most `sweeps`) while they improve the cost;
 //   - the defaults are the first point, so the scan never returns a worse start than them.
 // The local solver then starts from that point (the coarse-to-fine levels of fit_model).
 #include <cstddef>
