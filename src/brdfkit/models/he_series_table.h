@@ -6,12 +6,15 @@
 // S depends on nothing but (g, c), so one table serves every parameter set and channel. It holds
 //   r(x, y) = log S + log g + c/g,   x = log g,  y = log(1 + c/g),
 // (S ≈ e^{−c/g}/g for large g: r is what is left, smooth), at steps 0.03 in x and 0.01 in y over
-// 2 ≤ g ≤ 10⁴ (the fitter's box reaches g ≈ 3200) and c/g ≤ 1000, each node summed to 10⁻¹⁰ in log
+// 0.5 ≤ g ≤ 10⁴ (the fitter's box reaches g ≈ 3200) and c/g ≤ 1000, each node summed to 10⁻¹⁰ in log
 // space (he_log_series: far from the peak of a rough surface S lies below the smallest double, r
 // does not); a look-up is the tensor-product cubic Lagrange interpolant of the 4 × 4 nodes around
 // (x, y). Worst relative error against the series over the table's domain, where S is a normal
-// double: 3.9e-7 (at g ≈ 97, c/g ≈ 990; tests/models/he/test_he_series_table.cpp), inside the 1e-6
-// to which the series itself is summed.
+// double: 4.4e-7 (at g ≈ 0.51, c/g ≈ 21; tests/models/he/test_he_series_table.cpp), inside the 1e-6
+// to which the series itself is summed. Below g = 0.5 r curves faster in y (r ≈ 2x + c/g for small
+// g): at these steps the error passes 1e-6 near g = 0.1. Down to 0.5 the table serves smooth
+// surfaces too: g = (kσ)²(cos θi + cos θo)² ≤ 9 at vch_golden_yellow's He fit (σ0 ≈ 0.11 µm),
+// which spent a third of its CPU summing series below g = 2 (14.5 s, 7.6–8.4 s from 0.5).
 // c/g reaches (τ/2σ)² (v_xy/v_z)², large away from the specular peak of a smooth, long-correlated
 // surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000.
 // Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
@@ -74,7 +77,7 @@ class HeSeriesTable {
   void block_at(const Rows& rows, const double* g, double* s) const;
 
  private:
-  static constexpr double kGMin = 2, kGMax = 1e4, kYMax = 1000;  // c/g ≤ kYMax
+  static constexpr double kGMin = 0.5, kGMax = 1e4, kYMax = 1000;  // c/g ≤ kYMax
   static constexpr double kStepX = 0.03, kStepY = 0.01;
   static constexpr double kPerStepX = 1 / kStepX, kPerStepY = 1 / kStepY;  // nodes per unit of x and y
 

@@ -35,10 +35,10 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
     if (rel > worst) worst = rel, worst_g = g, worst_c = c;
   };
   for (int k = 0; k < 100000; ++k) {
-    const double g = 2 * std::pow(1e4 / 2, u(rng)), y = std::expm1(u(rng) * std::log1p(1000.0));
+    const double g = 0.5 * std::pow(1e4 / 0.5, u(rng)), y = std::expm1(u(rng) * std::log1p(1000.0));
     check(g, g * y);
   }
-  for (double g : {2.0, 2.0001, 99.5, 3200.0, 1e4})  // the edges of the domain
+  for (double g : {0.5, 0.5001, 2.0, 99.5, 3200.0, 1e4})  // the edges of the domain
     for (double y : {0.0, 1e-9, 0.37, 99.9, 299.9, 999.9, 1000.0}) check(g, g * y);
   std::printf("He series table: worst relative difference to the series %.3g at g = %.6g, c = %.6g (%d points underflow)\n",
               worst, worst_g, worst_c, underflows);
@@ -63,7 +63,7 @@ TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
 
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
-  for (const auto& [g, c] : {std::pair{0.5, 3.0}, std::pair{1.9, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 50001.0}}) {
+  for (const auto& [g, c] : {std::pair{0.1, 3.0}, std::pair{0.49, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 50001.0}}) {
     EXPECT_FALSE(table.covers(g, c)) << g << " " << c;
     EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kSummedTolerance)) << g << " " << c;
   }
@@ -83,7 +83,7 @@ TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
     g.push_back(gk);
     c.push_back(gk * std::expm1(u(rng) * std::log1p(3000.0)));
   }
-  for (double gk : {2.0, 1e4})  // the edges of the domain
+  for (double gk : {0.5, 1e4})  // the edges of the domain
     for (double y : {0.0, 1000.0}) g.push_back(gk), c.push_back(gk * y);
   while (g.size() % kB) g.push_back(5.0), c.push_back(1.0);
   // S of every pair through blocks, with the pairs first rotated by `shift` lanes.
@@ -160,7 +160,7 @@ TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
 TEST(HeSeriesTable, OutsideItsDomainJumpsTooLittleForForwardDifferences) {
   const HeSeriesTable& table = HeSeriesTable::get();
   double worst = 0;
-  for (const auto& [g0, c] : {std::pair{0.3, 2.0}, std::pair{1.2, 40.0}, std::pair{5.0, 6000.0}, std::pair{40.0, 1e5}}) {
+  for (const auto& [g0, c] : {std::pair{0.3, 2.0}, std::pair{1.2, 2000.0}, std::pair{5.0, 6000.0}, std::pair{40.0, 1e5}}) {
     ASSERT_FALSE(table.covers(g0, c));
     auto terms = [c = c](double g) {
       HeSeriesStats stats;
