@@ -14,7 +14,8 @@
 // to which the series itself is summed. Below g = 0.5 r curves faster in y (r ≈ 2x + c/g for small
 // g): at these steps the error passes 1e-6 near g = 0.1. Down to 0.5 the table serves smooth
 // surfaces too: g = (kσ)²(cos θi + cos θo)² ≤ 9 at vch_golden_yellow's He fit (σ0 ≈ 0.11 µm),
-// which spent a third of its CPU summing series below g = 2 (14.5 s, 7.6–8.4 s from 0.5).
+// where summing the series for 0.5 ≤ g < 2 takes a third of the fit's CPU (14.5 s of CPU with
+// the table from g = 2, 7.6–8.4 s from g = 0.5).
 // c/g reaches (τ/2σ)² (v_xy/v_z)², large away from the specular peak of a smooth, long-correlated
 // surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000.
 // Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
