@@ -11,11 +11,11 @@
 // does not); a look-up is the tensor-product cubic Lagrange interpolant of the 4 × 4 nodes around
 // (x, y). Worst relative error against the series over the table's domain, where S is a normal
 // double: 4.4e-7 (at g ≈ 0.51, c/g ≈ 21; tests/models/he/test_he_series_table.cpp), inside the 1e-6
-// to which the series itself is summed. Below g = 0.5 r curves faster in y (r ≈ 2x + c/g for small
-// g): at these steps the error passes 1e-6 near g = 0.1. Down to 0.5 the table serves smooth
-// surfaces too: g = (kσ)²(cos θi + cos θo)² ≤ 9 at vch_golden_yellow's He fit (σ0 ≈ 0.11 µm),
-// where summing the series for 0.5 ≤ g < 2 takes a third of the fit's CPU (14.5 s of CPU with
-// the table from g = 2, 7.6–8.4 s from g = 0.5).
+// to which the series itself is summed. Below g = 0.5 this interpolant at these steps passes 1e-6
+// (1.6e-6 near g ≈ 0.1, c/g ≈ 80, against the series summed in NumPy). Down to 0.5 the table
+// serves smooth surfaces too: g = (kσ)²(cos θi + cos θo)² ≤ 9 at vch_golden_yellow's He fit
+// (σ0 ≈ 0.11 µm), whose summed series took 31 % of its profile with the table from g = 2 (14.5 s of
+// CPU; 7.6–8.4 s with the table from g = 0.5).
 // c/g reaches (τ/2σ)² (v_xy/v_z)², large away from the specular peak of a smooth, long-correlated
 // surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000.
 // Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
