@@ -1,11 +1,13 @@
 // Evaluation throughput of kd/π + Cook-Torrance for every distribution of the catalogue:
-// evaluations per second on one core, through the runtime Model::eval_batch that fitting uses
-// (ModelAdapter → the static type's structure-of-arrays loop, one virtual call per sweep) over the
-// 1 458 000 direction pairs of a MERL grid (cell centres, DESIGN.md §2), three channels per sweep.
+// evaluations per second on one core, through the runtime Model::eval_batch_rgb that fitting uses
+// (fit/engine/projected_objective.cpp; ModelAdapter → the static type's structure-of-arrays loop,
+// one virtual call per sweep: three eval_batch calls for most models, one pass for He, whose three
+// channels share its shadowing and effective roughness) over the 1 458 000 direction pairs of a
+// MERL grid (cell centres, DESIGN.md §2), three channels per sweep.
 // DESIGN.md §12's floor: 3.7 ms per sweep for GGX in double. Also the per-pair virtual
-// Model::eval for GGX, to show what the batch loop buys. `--stride=k` evaluates every k-th pair
-// only (for distributions whose Smith term is numeric, where a full sweep takes minutes); the
-// rate (items_per_second = evaluations/s) is what to compare.
+// Model::eval for GGX, to show what the batch loop buys, and He one channel per call.
+// `--stride=k` evaluates every k-th pair only (for distributions whose Smith term is numeric,
+// where a full sweep takes minutes); the rate (items_per_second = evaluations/s) is what to compare.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -64,10 +66,30 @@ void sweep(benchmark::State& state, std::string_view name) {
   const Model& m = model_by_name(name);
   const ParamValues v = ParamValues::defaults(m.params());
   const SoaPairs d{g.wix.data(), g.wiy.data(), g.wiz.data(), g.wox.data(), g.woy.data(), g.woz.data()};
-  std::vector<double> out(g.size());
+  std::vector<double> out_r(g.size()), out_g(g.size()), out_b(g.size());
+  const double* const p[3] = {v.channel(0), v.channel(1), v.channel(2)};
+  double* const out[3] = {out_r.data(), out_g.data(), out_b.data()};
   // One sweep before the timed ones: the tables built on first use (Smith Λ nodes and rows, He's
   // series, Holzschuch-Pacanowski's G1) would otherwise fall into the first timed iterations.
-  for (int c = 0; c < 3; ++c) m.eval_batch(v.channel(c), c, g.size(), d, out.data());
+  m.eval_batch_rgb(p, g.size(), d, out);
+  for (auto _ : state) {
+    m.eval_batch_rgb(p, g.size(), d, out);
+    benchmark::DoNotOptimize(out_r.data());
+    benchmark::DoNotOptimize(out_g.data());
+    benchmark::DoNotOptimize(out_b.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(int64_t(state.iterations() * 3 * g.size()));
+}
+
+// He through Model::eval_batch, one channel per call (what the fitter's per-channel Jacobian columns
+// take): each call computes the shape terms that eval_batch_rgb shares between the channels.
+void he_per_channel(benchmark::State& state) {
+  const Grid& g = merl_grid();
+  const Model& m = model_by_name("he");
+  const ParamValues v = ParamValues::defaults(m.params());
+  const SoaPairs d{g.wix.data(), g.wiy.data(), g.wiz.data(), g.wox.data(), g.woy.data(), g.woz.data()};
+  std::vector<double> out(g.size());
   for (auto _ : state) {
     for (int c = 0; c < 3; ++c) {
       m.eval_batch(v.channel(c), c, g.size(), d, out.data());
@@ -120,6 +142,7 @@ int main(int argc, char** argv) {
   // The physical models (kd/pi + their own lobe), whose series and numeric terms dominate fit-all's time.
   for (std::string_view name : {"he", "holzschuch-pacanowski", "low-microfacet"})
     benchmark::RegisterBenchmark(std::string(name).c_str(), sweep, name)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("he/Model::eval_batch-per-channel", he_per_channel)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("cook-torrance-ggx/virtual-Model::eval-per-pair", virtual_per_pair)
       ->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);

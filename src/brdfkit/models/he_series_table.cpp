@@ -8,7 +8,7 @@
 namespace brdfkit {
 
 // Written by the build (cmake/generators/he_series_table.cpp): HeSeriesTable::compute_nodes().
-extern const int kHeSeriesTableColumns, kHeSeriesTableRows;
+extern const int kHeSeriesTableColumns, kHeSeriesTableRows, kHeSeriesTableFarRows;
 extern const double kHeSeriesTableNodes[];
 
 const HeSeriesTable& HeSeriesTable::get() {
@@ -17,13 +17,20 @@ const HeSeriesTable& HeSeriesTable::get() {
 }
 
 HeSeriesTable::HeSeriesTable()
-    : x0_(first_x()), nx_(kHeSeriesTableColumns), ny_(kHeSeriesTableRows), r_(kHeSeriesTableNodes) {}
+    : x0_(first_x()),
+      q0_(first_q()),
+      nx_(kHeSeriesTableColumns),
+      ny_(kHeSeriesTableRows),
+      stride_(kHeSeriesTableRows + kHeSeriesTableFarRows),
+      r_(kHeSeriesTableNodes) {}
 
 double HeSeriesTable::operator()(double g, double c) const {
   if (!covers(g, c)) return he_series(g, c, kSummedTolerance);
-  const double y = c / g;
-  const double r = interpolate(r_, nx_, ny_, (std::log(g) - x0_) * kPerStepX, std::log1p(y) * kPerStepY);
-  return std::exp(r - y) / g;
+  const RowAt row = row_at(c / g, q0_, ny_, stride_ - ny_);
+  double wy[4];
+  lagrange4(row.t, wy);
+  const double r = interpolate(r_, nx_, stride_, (std::log(g) - x0_) * kPerStepX, row.j, wy, 1);
+  return std::exp(r - row.y) / g;
 }
 
 void HeSeriesTable::block(const double* g, const double* c, double* s) const {

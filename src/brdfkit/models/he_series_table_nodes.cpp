@@ -17,21 +17,26 @@ constexpr double kNodeTolerance = 1e-10;
 
 }  // namespace
 
-// One column below g = kGMin and two nodes beyond the top of each axis, so that a look-up inside the
-// domain has its 4 × 4 nodes; at y = 0 (the first row) a look-up in the first cell takes the cubic
-// through the rows 0 … 3.
+// One column below g = kGMin, one far row below its domain and two nodes beyond the top of each
+// axis, so that a look-up inside the domain has its 4 × 4 nodes; at y = 0 (the first row) a
+// look-up in the first cell takes the cubic through the rows 0 … 3.
 HeSeriesTable::Nodes HeSeriesTable::compute_nodes() {
-  const double x0 = first_x();
-  Nodes n{int(std::ceil((std::log(kGMax) - x0) / kStepX)) + 3, int(std::ceil(std::log1p(kYMax) / kStepY)) + 3, {}};
-  n.r.resize(size_t(n.columns) * size_t(n.rows));
+  const double x0 = first_x(), q0 = first_q();
+  Nodes n{int(std::ceil((std::log(kGMax) - x0) / kStepX)) + 3, int(std::ceil(std::log1p(kYMax) / kStepY)) + 3,
+          int(std::ceil((std::log(kRatioMax) - q0) / kStepQ)) + 3, {}};
+  const std::size_t stride = std::size_t(n.rows + n.far_rows);
+  n.r.resize(std::size_t(n.columns) * stride);
   // Isolated: a caller inside a parallel loop must not take one of that loop's tasks here.
   tbb::this_task_arena::isolate([&] {
     tbb::parallel_for(0, n.columns, [&](int i) {
       const double g = std::exp(x0 + i * kStepX);
+      double* column = n.r.data() + std::size_t(i) * stride;
       for (int j = 0; j < n.rows; ++j) {
         const double y = std::expm1(j * kStepY);
-        n.r[size_t(i) * size_t(n.rows) + size_t(j)] = he_log_series(g, g * y, kNodeTolerance) + std::log(g) + y;
+        column[j] = he_log_series(g, g * y, kNodeTolerance) + std::log(g) + y;
       }
+      for (int j = 0; j < n.far_rows; ++j)
+        column[n.rows + j] = he_log_series(g, g * std::exp(q0 + j * kStepQ), kNodeTolerance) + std::log(g);
     });
   });
   return n;

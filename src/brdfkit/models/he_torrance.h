@@ -167,7 +167,7 @@ struct HeTorrance {
   }
 
   // c/g of unsummed_of, τ² v_xy² / (4 σ² v_z²) with v unit-less: the same in every channel, so
-  // the channels of a pair share the table's y side (HeSeriesTable::rows).
+  // the channels of a pair share the table's rows (HeSeriesTable::rows).
   static double series_ratio(double tau, double vxy2, double sigma, double vz) {
     const double sigma_vz = sigma * vz;
     return 0.25 * tau * tau * vxy2 / (sigma_vz * sigma_vz);  // Eq. 78–79: c / g, k² cancelled
@@ -190,7 +190,8 @@ struct HeTorrance {
   // holds one incidence per chunk and varies Δφ fastest, fit/metric/metric_grid.h, so the slope
   // terms and σ are computed once per (θi, θo) there, eight new pairs at a time on vector lanes,
   // he_batch_block.h), and the series of a block of pairs is looked up at once
-  // (HeSeriesTable::block_at): eval's values within 1e-12 relative.
+  // (HeSeriesTable::block_at): eval's values within the table's block bounds (1e-12 relative,
+  // 1e-11 where c/g > 1000).
   static void eval_batch(const double* p, int c, std::size_t n, const double* wi_x, const double* wi_y,
                          const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                          double* out);

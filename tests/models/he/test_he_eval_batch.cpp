@@ -1,8 +1,9 @@
 // HeTorrance::eval_batch keeps what depends on the cosines alone (the shadowing of wi and wo, σ)
 // while they repeat, as they do through a metric chunk (one incidence per chunk, Δφ fastest),
 // computes it for new cosines eight pairs at a time (he_pair_shape_lanes), and looks the series
-// up a block of pairs at a time (HeSeriesTable::block_at): it must give eval's values
-// within 1e-12 relative, since tables are tabulated through eval and fits run through eval_batch.
+// up a block of pairs at a time (HeSeriesTable::block_at): it must give eval's values within the
+// table's block bounds (1e-12 relative, 1e-11 where c/g > 1000, as at a smooth, long-correlated
+// surface), since tables are tabulated through eval and fits run through eval_batch.
 // eval_batch_rgb, which computes the shape terms once for R, G and B, must give eval_batch's to
 // the bit. Its eval_batch_from, which fits use for differences in η and k, must give eval_batch's
 // values to rounding.
@@ -55,7 +56,7 @@ TEST(HeEvalBatch, AgreesWithEvalThroughRunsOfOneIncidence) {
   const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
   int compared = 0, nonzero = 0;
   double worst = 0;
-  for (const auto& [sigma0, tau] : {std::pair{0.05, 3.0}, std::pair{0.53, 2.0}, std::pair{1.5, 8.0}}) {
+  for (const auto& [sigma0, tau] : {std::pair{0.05, 3.0}, std::pair{0.53, 2.0}, std::pair{1.5, 8.0}, std::pair{0.24, 38.0}}) {
     ParamValues values = ParamValues::defaults(m.params());
     values.set(m.params(), "sigma0", sigma0);
     values.set(m.params(), "tau", tau);
@@ -78,8 +79,8 @@ TEST(HeEvalBatch, AgreesWithEvalThroughRunsOfOneIncidence) {
     }
   }
   std::printf("He eval_batch vs eval: worst relative %.3g over %d values\n", worst, compared);
-  EXPECT_LT(worst, 1e-12);
-  EXPECT_EQ(compared, 3 * 3 * 960);
+  EXPECT_LT(worst, 1e-11);
+  EXPECT_EQ(compared, 4 * 3 * 960);
   EXPECT_GT(nonzero, compared / 3);  // most pairs above the horizon: the comparison is not of zeros
 }
 

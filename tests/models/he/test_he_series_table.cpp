@@ -22,7 +22,10 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
   const HeSeriesTable& table = HeSeriesTable::get();
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
-  double worst = 0, worst_g = 0, worst_c = 0;
+  // The worst relative difference and where, in the near rows (c/g ≤ 1000) and the far ones.
+  struct Worst {
+    double rel = 0, g = 0, c = 0;
+  } worst[2];
   int underflows = 0;
   auto check = [&](double g, double c) {
     ASSERT_TRUE(table.covers(g, c)) << g << " " << c;
@@ -32,17 +35,25 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
       return;
     }
     const double rel = std::abs(got / want - 1);
-    if (rel > worst) worst = rel, worst_g = g, worst_c = c;
+    Worst& w = worst[c > 1000 * g];
+    if (rel > w.rel) w = {rel, g, c};
   };
-  for (int k = 0; k < 100000; ++k) {
+  for (int k = 0; k < 100000; ++k) {  // the near rows
     const double g = 0.5 * std::pow(1e4 / 0.5, u(rng)), y = std::expm1(u(rng) * std::log1p(1000.0));
     check(g, g * y);
   }
+  for (int k = 0; k < 30000; ++k) {  // the far rows
+    const double g = 0.5 * std::pow(1e4 / 0.5, u(rng)), y = 1000 * std::pow(100.0, u(rng));
+    check(g, g * y);
+  }
   for (double g : {0.5, 0.5001, 2.0, 99.5, 3200.0, 1e4})  // the edges of the domain
-    for (double y : {0.0, 1e-9, 0.37, 99.9, 299.9, 999.9, 1000.0}) check(g, g * y);
-  std::printf("He series table: worst relative difference to the series %.3g at g = %.6g, c = %.6g (%d points underflow)\n",
-              worst, worst_g, worst_c, underflows);
-  EXPECT_LT(worst, 5e-7);
+    for (double y : {0.0, 1e-9, 0.37, 99.9, 299.9, 999.9, 1000.0, 1000.0001, 1e4, 99999.0, 1e5}) check(g, g * y);
+  for (int far = 0; far < 2; ++far)
+    std::printf("He series table, %s rows: worst relative difference to the series %.3g at g = %.6g, c/g = %.6g\n",
+                far ? "far" : "near", worst[far].rel, worst[far].g, worst[far].c / worst[far].g);
+  std::printf("He series table: %d points underflow\n", underflows);
+  EXPECT_LT(worst[0].rel, 5e-7);
+  EXPECT_LT(worst[1].rel, 5e-7);
 }
 
 // The build sums the nodes once and compiles them in (cmake/generators/he_series_table.cpp): they
@@ -53,7 +64,7 @@ TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
   const HeSeriesTable::Nodes want = HeSeriesTable::compute_nodes();
   const std::span<const double> got = HeSeriesTable::get().nodes();
   ASSERT_EQ(got.size(), want.r.size());
-  ASSERT_EQ(got.size(), size_t(want.columns) * size_t(want.rows));
+  ASSERT_EQ(got.size(), size_t(want.columns) * size_t(want.rows + want.far_rows));
   double worst = 0;
   for (std::size_t k = 0; k < got.size(); ++k) worst = std::max(worst, std::abs(got[k] - want.r[k]));
   std::printf("He series table: %zu compiled-in nodes, worst difference to the computed nodes %.3g\n", got.size(),
@@ -63,28 +74,29 @@ TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
 
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
-  for (const auto& [g, c] : {std::pair{0.1, 3.0}, std::pair{0.49, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 50001.0}}) {
+  for (const auto& [g, c] : {std::pair{0.1, 3.0}, std::pair{0.49, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 5.00001e6}}) {
     EXPECT_FALSE(table.covers(g, c)) << g << " " << c;
     EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kSummedTolerance)) << g << " " << c;
   }
 }
 
 // The block look-up (vector log, log1p and exp) against the scalar one: within 1e-12 relative
-// inside the domain, the same summed series outside it, and a value that does not depend on the
-// lane it is computed in.
+// inside the near rows and 1e-11 in the far ones (there log S moves by up to ~700 per unit of
+// q = log(c/g), which turns the vector log's 4 ulp of q into ~5e-12 of S), the same summed series
+// outside the domain, and a value that does not depend on the lane it is computed in.
 TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
   const HeSeriesTable& table = HeSeriesTable::get();
   constexpr std::size_t kB = HeSeriesTable::kBlock;
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<double> g, c;
-  for (int k = 0; k < 20000; ++k) {  // g from 0.1 to 2·10⁴ and c/g to 3000: inside and outside
+  for (int k = 0; k < 20000; ++k) {  // g from 0.1 to 2·10⁴ and c/g to 3·10⁵: inside and outside
     const double gk = 0.1 * std::pow(2e5, u(rng));
     g.push_back(gk);
-    c.push_back(gk * std::expm1(u(rng) * std::log1p(3000.0)));
+    c.push_back(gk * std::expm1(u(rng) * std::log1p(3e5)));
   }
   for (double gk : {0.5, 1e4})  // the edges of the domain
-    for (double y : {0.0, 1000.0}) g.push_back(gk), c.push_back(gk * y);
+    for (double y : {0.0, 1000.0, 1e5}) g.push_back(gk), c.push_back(gk * y);
   while (g.size() % kB) g.push_back(5.0), c.push_back(1.0);
   // S of every pair through blocks, with the pairs first rotated by `shift` lanes.
   auto blocked = [&](int shift) {
@@ -96,7 +108,7 @@ TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
     return s;
   };
   const std::vector<double> s = blocked(0), shifted = blocked(1);
-  double worst = 0;
+  double worst[2] = {0, 0};  // near rows, far rows
   int outside = 0;
   for (std::size_t k = 0; k < g.size(); ++k) {
     ASSERT_EQ(s[k], shifted[k]) << "lane dependence at g " << g[k] << " c " << c[k];
@@ -105,29 +117,31 @@ TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
       ASSERT_EQ(s[k], want) << "outside the domain: g " << g[k] << " c " << c[k];
       ++outside;
     } else if (want > 1e-290) {  // S a normal double (as in AgreesWithTheSeriesOverItsDomain)
-      worst = std::max(worst, std::abs(s[k] / want - 1));
+      double& w = worst[c[k] > 1000 * g[k]];
+      w = std::max(w, std::abs(s[k] / want - 1));
     }
   }
-  std::printf("He series table: block look-up vs scalar, worst relative %.3g (%d pairs outside the domain summed)\n",
-              worst, outside);
-  EXPECT_LT(worst, 1e-12);
+  std::printf("He series table: block look-up vs scalar, worst relative %.3g near, %.3g far (%d pairs outside the domain summed)\n",
+              worst[0], worst[1], outside);
+  EXPECT_LT(worst[0], 1e-12);
+  EXPECT_LT(worst[1], 1e-11);
   EXPECT_GT(outside, 1000);
 }
 
 // He's three channels share c/g at a pair (their g and c both scale with k²): one set of rows
-// serves every channel's g, each value within 1e-12 relative of the scalar look-up at c = ratio · g
-// inside the domain, and that series summed outside it.
+// serves every channel's g, each value within the block look-up's bounds of the scalar look-up at
+// c = ratio · g inside the domain, and that series summed outside it.
 TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
   const HeSeriesTable& table = HeSeriesTable::get();
   constexpr std::size_t kB = HeSeriesTable::kBlock;
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> u(0, 1);
-  double worst = 0;
+  double worst[2] = {0, 0};  // near rows, far rows
   int outside = 0;
   for (int b = 0; b < 300; ++b) {
     double ratio[kB], g[3][kB], s[kB];
     for (std::size_t k = 0; k < kB; ++k) {
-      ratio[k] = std::expm1(u(rng) * std::log1p(3000.0));  // c/g to 3000: inside and outside
+      ratio[k] = std::expm1(u(rng) * std::log1p(3e5));  // c/g to 3·10⁵: near and far rows, and outside
       g[0][k] = 0.1 * std::pow(2e5, u(rng));
       for (int ch = 1; ch < 3; ++ch) {  // g ∝ k² = (2π/λ)²
         const double lambda_ratio = kChannelWavelengthUm[0] / kChannelWavelengthUm[ch];
@@ -144,13 +158,16 @@ TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
           ASSERT_EQ(s[k], he_series(gc[k], c, HeSeriesTable::kSummedTolerance)) << "g " << gc[k] << " c " << c;
           ++outside;
         } else if (want > 1e-290) {
-          worst = std::max(worst, std::abs(s[k] / want - 1));
+          double& w = worst[ratio[k] > 1000];
+          w = std::max(w, std::abs(s[k] / want - 1));
         }
       }
     }
   }
-  std::printf("He series table: shared rows vs scalar, worst relative %.3g (%d outside the domain)\n", worst, outside);
-  EXPECT_LT(worst, 1e-12);
+  std::printf("He series table: shared rows vs scalar, worst relative %.3g near, %.3g far (%d outside the domain)\n",
+              worst[0], worst[1], outside);
+  EXPECT_LT(worst[0], 1e-12);
+  EXPECT_LT(worst[1], 1e-11);
   EXPECT_GT(outside, 1000);
 }
 
@@ -160,7 +177,7 @@ TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
 TEST(HeSeriesTable, OutsideItsDomainJumpsTooLittleForForwardDifferences) {
   const HeSeriesTable& table = HeSeriesTable::get();
   double worst = 0;
-  for (const auto& [g0, c] : {std::pair{0.3, 2.0}, std::pair{1.2, 2000.0}, std::pair{5.0, 6000.0}, std::pair{40.0, 1e5}}) {
+  for (const auto& [g0, c] : {std::pair{0.3, 2.0}, std::pair{0.2, 50.0}, std::pair{0.32, 400.0}, std::pair{1.2e4, 10.0}}) {
     ASSERT_FALSE(table.covers(g0, c));
     auto terms = [c = c](double g) {
       HeSeriesStats stats;
