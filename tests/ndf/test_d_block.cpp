@@ -72,6 +72,7 @@ template <template <class> class Ndf> void expect_close(const std::vector<std::v
 }
 
 TEST(DBlock, BlinnPhongMatchesD) { expect_close<BlinnPhong>({{0.0}, {1.0}, {30.0}, {1e3}, {1e6}}); }
+TEST(DBlock, BeckmannMatchesD) { expect_close<Beckmann>({{1e-3}, {0.05}, {0.3}, {2.0}}); }
 TEST(DBlock, ExponentialMatchesD) { expect_close<Exponential>({{1e-3}, {0.05}, {0.3}, {2.0}}); }
 TEST(DBlock, GaussianMatchesD) { expect_close<Gaussian>({{1e-3}, {0.02}, {0.2}, {0.7}, {1.5}}); }
 TEST(DBlock, GtrMatchesD) {

@@ -9,6 +9,7 @@
 
 #include "brdfkit/core/vec.h"
 #include "brdfkit/core/param.h"
+#include "brdfkit/ndf/d_block.h"
 #include "brdfkit/ndf/distribution.h"
 
 namespace brdfkit {
@@ -41,6 +42,12 @@ template <class T> struct Beckmann {
     if (!(cos_theta > T(0))) return T(0);
     const T c2 = cos_theta * cos_theta;
     return P22((T(1) - c2) / c2) / (c2 * c2);
+  }
+  // D at the kDBlock cosines c[0 … kDBlock) (ndf/d_block.h), for the batch loops.
+  void D_block(const double* c, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    beckmann_d_block(alpha, c, out);
   }
   T unit(const T& cos_theta) const { return D(cos_theta) / D(T(1)); }
   // Closed form Λ (DESIGN.md §4), through erfc to avoid the cancellation of erf(a) − 1.

@@ -80,6 +80,16 @@ BRDFKIT_VECTOR_KERNEL void blinn_phong_d_block(double N, const double* __restric
   }
 }
 
+BRDFKIT_VECTOR_KERNEL void beckmann_d_block(double alpha, const double* __restrict c, double* __restrict out) {
+  const double a2 = alpha * alpha;
+  for (std::size_t k = 0; k < kDBlock; ++k) {
+    const double x = unit_interval(c[k]);
+    const double c2 = x * x;
+    const double d = exp(-((1.0 - c2) / c2) / a2) / (kPi * a2) / (c2 * c2);  // seed 000 Table 1
+    out[k] = c[k] > 0.0 ? d : 0.0;
+  }
+}
+
 BRDFKIT_VECTOR_KERNEL void exponential_d_block(double alpha, const double* __restrict c, double* __restrict out) {
   for (std::size_t k = 0; k < kDBlock; ++k) {
     const double x = unit_interval(c[k]);

@@ -31,6 +31,8 @@ void sgd_p22_block(double K, double alpha, double p, const double* x, double* ou
 void sgd_d_block(double K, double alpha, double p, const double* c, double* out);
 // Blinn-Phong (ndf/blinn_phong.h): (N + 2)/(2π) c^N; 0 at c ≤ 0.
 void blinn_phong_d_block(double N, const double* c, double* out);
+// Beckmann (ndf/beckmann.h): exp(−tan²θ/α²)/(π α²)/c⁴; 0 at c ≤ 0.
+void beckmann_d_block(double alpha, const double* c, double* out);
 // Exponential (ndf/exponential.h): exp(−tanθ/α)/(2π α²)/c⁴; 0 at c ≤ 0.
 void exponential_d_block(double alpha, const double* c, double* out);
 // Exponential power (ndf/exponential_power.h): norm · exp(−(tan²θ/σ²)^p)/c⁴; 0 at c ≤ 0.
