@@ -8,8 +8,8 @@
 // holds two runs of rows, both in c/g, so that the channels of a pair, which share c/g, share rows:
 //  - near, c/g ≤ 1000: r = log S + log g + c/g at y = log(1 + c/g), steps 0.01 (S ≈ e^{−c/g}/g for
 //    large g: r is what is left, smooth);
-//  - far, 1000 < c/g ≤ 10⁵: r = log S + log g at q = log(c/g), steps 0.01 (there S is far from
-//    e^{−c/g}/g, whose removal would add curvature; log S alone is smooth in q).
+//  - far, 1000 < c/g ≤ 10⁵: r = log S + log g at q = log(c/g), steps 0.01 (the near run's r and y
+//    carried on to c/g = 10⁵ interpolate to 1.1e-5 there at these steps, in NumPy).
 // Each node is summed to 10⁻¹⁰ in log space (he_log_series: far from the peak of a rough surface S
 // lies below the smallest double, r does not); a look-up is the tensor-product cubic Lagrange
 // interpolant of the 4 × 4 nodes around it, and S = e^{r − y}/g (y = 0 in the far run). Worst
@@ -49,7 +49,7 @@ class HeSeriesTable {
   // The nodes, column by column (x0 + i·step x, i < columns): the near rows r(j·step y), j < rows,
   // then the far rows r(q0 + j·step q), j < far_rows. The build runs compute_nodes once
   // (cmake/generators/he_series_table.cpp) and compiles its output in, so that a process does not
-  // sum 380 k series (~1 s of CPU) before its first look-up.
+  // sum 390 k series (~0.7 s of CPU) before its first look-up.
   struct Nodes {
     int columns, rows, far_rows;
     std::vector<double> r;
@@ -152,8 +152,8 @@ class HeSeriesTable {
   double x0_ = 0, q0_ = 0;
   // Columns, near rows, and nodes per column (near and far rows).
   int nx_ = 0, ny_ = 0, stride_ = 0;
-  // Column by column: a batch's pairs mostly share g (a metric's grid varies Δφ fastest, which leaves the
-  // cosines unchanged), so a block's look-ups walk along y within 4 columns of the table.
+  // Column by column: a batch's pairs mostly share g (a metric's grid varies Δφ fastest, which
+  // leaves the cosines unchanged), so a block's look-ups walk along the rows of 4 columns.
   const double* r_ = nullptr;
 };
 

@@ -56,7 +56,8 @@ TEST(HeEvalBatch, AgreesWithEvalThroughRunsOfOneIncidence) {
   const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
   int compared = 0, nonzero = 0;
   double worst = 0;
-  for (const auto& [sigma0, tau] : {std::pair{0.05, 3.0}, std::pair{0.53, 2.0}, std::pair{1.5, 8.0}, std::pair{0.24, 38.0}}) {
+  for (const auto& [sigma0, tau] :
+       {std::pair{0.05, 3.0}, std::pair{0.53, 2.0}, std::pair{1.5, 8.0}, std::pair{0.24, 38.0}}) {
     ParamValues values = ParamValues::defaults(m.params());
     values.set(m.params(), "sigma0", sigma0);
     values.set(m.params(), "tau", tau);

@@ -74,7 +74,8 @@ TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
 
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
-  for (const auto& [g, c] : {std::pair{0.1, 3.0}, std::pair{0.49, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 5.00001e6}}) {
+  for (const auto& [g, c] :
+       {std::pair{0.1, 3.0}, std::pair{0.49, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 5.00001e6}}) {
     EXPECT_FALSE(table.covers(g, c)) << g << " " << c;
     EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kSummedTolerance)) << g << " " << c;
   }
@@ -121,7 +122,8 @@ TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
       w = std::max(w, std::abs(s[k] / want - 1));
     }
   }
-  std::printf("He series table: block look-up vs scalar, worst relative %.3g near, %.3g far (%d pairs outside the domain summed)\n",
+  std::printf("He series table: block look-up vs scalar, worst relative %.3g near, %.3g far "
+              "(%d pairs outside the domain summed)\n",
               worst[0], worst[1], outside);
   EXPECT_LT(worst[0], 1e-12);
   EXPECT_LT(worst[1], 1e-11);
@@ -177,7 +179,8 @@ TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
 TEST(HeSeriesTable, OutsideItsDomainJumpsTooLittleForForwardDifferences) {
   const HeSeriesTable& table = HeSeriesTable::get();
   double worst = 0;
-  for (const auto& [g0, c] : {std::pair{0.3, 2.0}, std::pair{0.2, 50.0}, std::pair{0.32, 400.0}, std::pair{1.2e4, 10.0}}) {
+  for (const auto& [g0, c] :
+       {std::pair{0.3, 2.0}, std::pair{0.2, 50.0}, std::pair{0.32, 400.0}, std::pair{1.2e4, 10.0}}) {
     ASSERT_FALSE(table.covers(g0, c));
     auto terms = [c = c](double g) {
       HeSeriesStats stats;
