@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <optional>
 
 #include "brdfkit/core/vec.h"
@@ -95,16 +96,23 @@ struct CookTorrance {
 
   static constexpr bool kDFromBlock = requires(const Ndf<double>& d, const double* c, double* o) { d.D_block(c, o); };
 
-  // The batch loop with N = 1 or 2 Fresnel terms (out1 unused for N = 1): block_loop where the
-  // distribution evaluates D on a block of cosines with vector math (ndf/d_block.h), fused_loop
-  // otherwise.
+  // One output of a batch loop: kd/π, ks and the Fresnel term that output uses (the distribution
+  // and the masking are shared by all of them).
+  struct Lobe {
+    double kd_pi, ks;
+    Fresnel<double> fresnel;
+  };
+
+  // The batch loop with N = 1, 2 or 3 outputs (out1 unused for N = 1, out2 for N < 3): block_loop
+  // where the distribution evaluates D on a block of cosines with vector math (ndf/d_block.h),
+  // fused_loop otherwise.
   template <int N>
-  static void batch_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
-                         const double* __restrict wix, const double* __restrict wiy, const double* __restrict wiz,
-                         const double* __restrict wox, const double* __restrict woy, const double* __restrict woz,
-                         double* __restrict out0, double* __restrict out1) {
-    if constexpr (kDFromBlock) block_loop<N>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out0, out1);
-    else fused_loop<N>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out0, out1);
+  static void batch_loop(const double* p, const Lobe (&lobes)[N], std::size_t n, const double* __restrict wix,
+                         const double* __restrict wiy, const double* __restrict wiz, const double* __restrict wox,
+                         const double* __restrict woy, const double* __restrict woz, double* __restrict out0,
+                         double* __restrict out1, double* __restrict out2) {
+    if constexpr (kDFromBlock) block_loop<N>(p, lobes, n, wix, wiy, wiz, wox, woy, woz, out0, out1, out2);
+    else fused_loop<N>(p, lobes, n, wix, wiy, wiz, wox, woy, woz, out0, out1, out2);
   }
 
   // batch_loop in one pass: eval_at's body without its early return, every product in eval_at's
@@ -117,13 +125,13 @@ struct CookTorrance {
   // calls whatever GCC's inlining budget decides elsewhere: a call left in the body keeps the
   // loop scalar too.
   template <int N>
-  [[gnu::flatten]] static void fused_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
+  [[gnu::flatten]] static void fused_loop(const double* p, const Lobe (&lobes)[N], std::size_t n,
                                           const double* __restrict wix, const double* __restrict wiy,
                                           const double* __restrict wiz, const double* __restrict wox,
                                           const double* __restrict woy, const double* __restrict woz,
-                                          double* __restrict out0, double* __restrict out1) {
+                                          double* __restrict out0, double* __restrict out1,
+                                          double* __restrict out2) {
     const Ndf<double> ndf(p + kNdfOffset);
-    const double kd_pi = p[0] * kInvPi, ks = p[1];
     const SmithG1Row* row = nullptr;
     if constexpr (kG1FromRow<Ndf> && kMasking != Masking::VGroove) row = &smith_g1_row(ndf);
     for (std::size_t k = 0; k < n; ++k) {
@@ -133,8 +141,9 @@ struct CookTorrance {
       const double len = std::sqrt(hx * hx + hy * hy + hz * hz);
       const double ch = hz / len, cd = 0.5 * len;
       const double d = ndf.D(ch), g = batch_masking(ndf, row, iz, oz, ch, cd), den = 4.0 * iz * oz;
-      out0[k] = above ? kd_pi + ks * (fresnel[0].eval(cd) * d * g / den) : 0.0;  // seed 004 Eq. 1
-      if constexpr (N == 2) out1[k] = above ? kd_pi + ks * (fresnel[1].eval(cd) * d * g / den) : 0.0;
+      out0[k] = lobe_value(lobes[0], above, cd, d, g, den);
+      if constexpr (N >= 2) out1[k] = lobe_value(lobes[1], above, cd, d, g, den);
+      if constexpr (N == 3) out2[k] = lobe_value(lobes[2], above, cd, d, g, den);
     }
   }
 
@@ -143,12 +152,11 @@ struct CookTorrance {
   // from eval_at's within ndf/d_block.h's bound (1e-12 relative); the rest is as in fused_loop. The
   // last block is padded with cosθh = 1, so every value is computed the same way wherever it lies.
   template <int N>
-  static void block_loop(const double* p, const Fresnel<double> (&fresnel)[N], std::size_t n,
-                         const double* __restrict wix, const double* __restrict wiy, const double* __restrict wiz,
-                         const double* __restrict wox, const double* __restrict woy, const double* __restrict woz,
-                         double* __restrict out0, double* __restrict out1) {
+  static void block_loop(const double* p, const Lobe (&lobes)[N], std::size_t n, const double* __restrict wix,
+                         const double* __restrict wiy, const double* __restrict wiz, const double* __restrict wox,
+                         const double* __restrict woy, const double* __restrict woz, double* __restrict out0,
+                         double* __restrict out1, double* __restrict out2) {
     const Ndf<double> ndf(p + kNdfOffset);
-    const double kd_pi = p[0] * kInvPi, ks = p[1];
     const SmithG1Row* row = nullptr;
     if constexpr (kRowMasking) row = &smith_g1_row(ndf);
     alignas(64) double ch[kDBlock], cd[kDBlock], d[kDBlock];
@@ -182,10 +190,16 @@ struct CookTorrance {
         if constexpr (kRowMasking) g = masking_of_g1(gi[k], go[k]);
         else g = masking(ndf, iz, oz, ch[k], cd[k]);
         const double den = 4.0 * iz * oz;
-        out0[j] = above ? kd_pi + ks * (fresnel[0].eval(cd[k]) * d[k] * g / den) : 0.0;  // seed 004 Eq. 1
-        if constexpr (N == 2) out1[j] = above ? kd_pi + ks * (fresnel[1].eval(cd[k]) * d[k] * g / den) : 0.0;
+        out0[j] = lobe_value(lobes[0], above, cd[k], d[k], g, den);
+        if constexpr (N >= 2) out1[j] = lobe_value(lobes[1], above, cd[k], d[k], g, den);
+        if constexpr (N == 3) out2[j] = lobe_value(lobes[2], above, cd[k], d[k], g, den);
       }
     }
+  }
+
+  // One output of the batch loops from the shared terms, eval_at's arithmetic in eval_at's order.
+  static double lobe_value(const Lobe& l, bool above, double cd, double d, double g, double den) {
+    return above ? l.kd_pi + l.ks * (l.fresnel.eval(cd) * d * g / den) : 0.0;  // seed 004 Eq. 1
   }
 
   // ρ at one direction pair from prepared terms (kd_pi = kd/π). Both directions must be unit.
@@ -210,12 +224,32 @@ struct CookTorrance {
     return eval_at(T(p[0] * T(kInvPi)), p[1], ndf, fresnel, wi.x(), wi.y(), wi.z(), wo.x(), wo.y(), wo.z());
   }
 
+  // The batch loops' output for channel values p with the Fresnel term's parameters at fp.
+  static Lobe lobe(const double* p, const double* fp) { return {p[0] * kInvPi, p[1], Fresnel<double>(fp)}; }
+
   // ρ of one channel at n direction pairs given as structure-of-arrays; out[k] for pair k, the
   // values of eval_at (to the bit, or within the bounds fused_loop and block_loop state).
   static void eval_batch(const double* p, int, std::size_t n, const double* wix, const double* wiy,
                          const double* wiz, const double* wox, const double* woy, const double* woz, double* out) {
-    const Fresnel<double> fresnel[1] = {Fresnel<double>(p + fresnel_offset())};
-    batch_loop<1>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out, nullptr);
+    const Lobe lobes[1] = {lobe(p, p + fresnel_offset())};
+    batch_loop<1>(p, lobes, n, wix, wiy, wiz, wox, woy, woz, out, nullptr, nullptr);
+  }
+  // eval_batch of the three channels (Model::eval_batch_rgb): one pass computing D, G and the
+  // cosines once where the channels share the distribution's parameters, each output equal to its
+  // channel's eval_batch to the bit; three eval_batch calls otherwise.
+  static void eval_batch_rgb(const double* const p[3], std::size_t n, const double* wix, const double* wiy,
+                             const double* wiz, const double* wox, const double* woy, const double* woz,
+                             double* const out[3]) {
+    const int f0 = fresnel_offset();
+    const std::size_t bytes = sizeof(double) * std::size_t(f0 - kNdfOffset);  // bitwise: −0 ≠ +0, NaN = NaN
+    const bool shared = std::memcmp(p[0] + kNdfOffset, p[1] + kNdfOffset, bytes) == 0 &&
+                        std::memcmp(p[0] + kNdfOffset, p[2] + kNdfOffset, bytes) == 0;
+    if (!shared) {
+      for (int c = 0; c < 3; ++c) eval_batch(p[c], c, n, wix, wiy, wiz, wox, woy, woz, out[c]);
+      return;
+    }
+    const Lobe lobes[3] = {lobe(p[0], p[0] + f0), lobe(p[1], p[1] + f0), lobe(p[2], p[2] + f0)};
+    batch_loop<3>(p[0], lobes, n, wix, wiy, wiz, wox, woy, woz, out[0], out[1], out[2]);
   }
   // eval_batch at two values a, b of one Fresnel parameter (models/paired_evaluation.h): D, G and the
   // cosines once, the Fresnel term twice, both outputs equal to eval_batch's to the bit. False
@@ -232,8 +266,8 @@ struct CookTorrance {
     std::copy(p + f0, p + f0 + fresnel_count, fp_b);
     fp_a[param - f0] = a;
     fp_b[param - f0] = b;
-    const Fresnel<double> fresnel[2] = {Fresnel<double>(fp_a), Fresnel<double>(fp_b)};
-    batch_loop<2>(p, fresnel, n, wix, wiy, wiz, wox, woy, woz, out_a, out_b);
+    const Lobe lobes[2] = {lobe(p, fp_a), lobe(p, fp_b)};
+    batch_loop<2>(p, lobes, n, wix, wiy, wiz, wox, woy, woz, out_a, out_b, nullptr);
     return true;
   }
   static void eval_batch(const double* p, int c, const SampleSet& s, double* out) {

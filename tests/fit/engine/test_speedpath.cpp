@@ -4,6 +4,8 @@
 //     two eval_batch calls, for every parameter of every registered model that offers it;
 //   - the Cook-Torrance batch loops equal eval<double>: to the bit, or within the G1 row's bound
 //     where they read G1 from a row (models/cook_torrance.h);
+//   - Cook-Torrance's eval_batch_rgb (one pass for R, G and B where they share the distribution's
+//     parameters) equals the three channels' eval_batch to the bit;
 //   - the cell domain's directions (fit/metric/metric_cells.cpp, sines and cosines once per axis) equal
 //     merl::cell_directions of every cell;
 //   - a fit through the paired pass gives the same parameters, to the bit, as one through two
@@ -149,6 +151,42 @@ TEST(SpeedPath, CookTorranceBatchLoopsEqualEval) {
               exact, block, row);
   EXPECT_EQ(exact + block + row, int(std::tuple_size_v<CookTorranceCatalogue>));
   EXPECT_GE(row, 9);
+}
+
+// eval_batch_rgb against eval_batch per channel, to the bit: channels that differ in kd, ks and F0
+// and share the distribution's parameters (one pass), then channels whose first distribution
+// parameter differs (three passes).
+template <class M> void expect_rgb_batch_equals_channels() {
+  const ParamTable t = M::params();
+  const Pairs pairs = random_pairs(300, 11);
+  ParamValues v = ParamValues::defaults(t);
+  const double kd[3] = {0.1, 0.3, 0.02}, ks[3] = {0.8, 0.2, 1.5}, f0[3] = {0.04, 0.5, 0.9};
+  for (int c = 0; c < 3; ++c) {
+    v.values[size_t(c)][size_t(find_param(t, "kd"))] = kd[c];
+    v.values[size_t(c)][size_t(find_param(t, "ks"))] = ks[c];
+    v.values[size_t(c)][size_t(find_param(t, "F0"))] = f0[c];
+  }
+  for (bool shared : {true, false}) {
+    if (!shared) v.values[2][size_t(M::kNdfOffset)] *= 1.25;
+    std::vector<double> rgb[3], one(pairs.size());
+    for (auto& r : rgb) r.resize(pairs.size());
+    const double* const p[3] = {v.channel(0), v.channel(1), v.channel(2)};
+    double* const out[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
+    M::eval_batch_rgb(p, pairs.size(), pairs.v[0].data(), pairs.v[1].data(), pairs.v[2].data(), pairs.v[3].data(),
+                      pairs.v[4].data(), pairs.v[5].data(), out);
+    for (int c = 0; c < 3; ++c) {
+      M::eval_batch(p[c], c, pairs.size(), pairs.v[0].data(), pairs.v[1].data(), pairs.v[2].data(),
+                    pairs.v[3].data(), pairs.v[4].data(), pairs.v[5].data(), one.data());
+      for (size_t k = 0; k < pairs.size(); ++k)
+        ASSERT_TRUE(same_bits(rgb[c][k], one[k]))
+            << M::name() << (shared ? " shared shape" : " per-channel shape") << " channel " << c << " pair " << k
+            << ": " << rgb[c][k] << " vs " << one[k];
+    }
+  }
+}
+
+TEST(SpeedPath, CookTorranceRgbBatchEqualsChannelBatches) {
+  std::apply([&](auto... m) { (expect_rgb_batch_equals_channels<decltype(m)>(), ...); }, CookTorranceCatalogue{});
 }
 
 // Every sample of the cell domain, in its order, against merl::cell_directions of its cell.

@@ -1,6 +1,7 @@
 #include "brdfkit/fit/metric/metric.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <array>
 #include <cmath>
@@ -116,7 +117,14 @@ Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricO
   m.transform_ = def.transform;
   m.sqrt_ = def.sqrt;
   m.data_ = &data;
-  const DomainTotals totals = build_domain(def, data, opt, m.chunks_, m.on_samples_, m.on_cells_);
+  // The domain and the albedo norm read the data only: built side by side, the albedo's trigonometry
+  // fills the cores while the domain's passes wait on memory.
+  DomainTotals totals;
+  tbb::parallel_invoke(
+      [&] { totals = build_domain(def, data, opt, m.chunks_, m.on_samples_, m.on_cells_); },
+      [&] {
+        if (def.divide_by_max_albedo) m.albedo_norm_ = max_albedo(opt.coarsen);
+      });
   m.folded_ = m.on_cells_ && def.cells.fold;
   m.cell_weighting_ = def.cells;
   m.coarsen_ = opt.coarsen;
@@ -125,7 +133,6 @@ Metric build_metric(std::string_view id, const MeasuredBrdf& data, const MetricO
   double scale2 = def.channel_pool;
   if (def.divide_by_weight_sum) scale2 /= totals.weight_sum;
   if (def.divide_by_max_albedo) {
-    m.albedo_norm_ = max_albedo(opt.coarsen);
     if (!(m.albedo_norm_ > 0) || !std::isfinite(m.albedo_norm_))
       throw MetricUndefined(data.path(), "maximum measured albedo is not positive; metric '" + m.id_ +
                                              "' is normalized by it and undefined");
@@ -169,22 +176,25 @@ double Metric::value(const Model& model, const ParamValues& values) const {
   // whether the sum is finite.
   struct Buffers {
     MetricChunk chunk;         // an on-demand grid's chunk
-    std::vector<double> rho;
+    std::array<std::vector<double>, 3> rho;
   };
   const std::vector<double> total = ordered_reduce(chunk_count(), 3, [&](size_t i, double* acc) {
     ScratchLease<Buffers> buffers;
     const MetricChunk& ch = chunk(i, buffers->chunk);
     double sum = 0;
-    std::vector<double>& rho = buffers->rho;
-    rho.resize(ch.size());
+    auto& rho = buffers->rho;
+    for (auto& r : rho) r.resize(ch.size());
     const SoaPairs d{ch.wi_x.data(), ch.wi_y.data(), ch.wi_z.data(), ch.wo_x.data(), ch.wo_y.data(), ch.wo_z.data()};
+    const double* const p[3] = {values.channel(0), values.channel(1), values.channel(2)};
+    double* const out[3] = {rho[0].data(), rho[1].data(), rho[2].data()};
+    model.eval_batch_rgb(p, ch.size(), d, out);
     for (int c = 0; c < 3; ++c) {
-      model.eval_batch(values.channel(c), c, ch.size(), d, rho.data());
       const auto& meas = ch.measured[size_t(c)];
+      const auto& rho_c = rho[size_t(c)];
       for (size_t k = 0; k < ch.size(); ++k) {
         const double f = ch.factor[k];
         const double r =
-            metric_residual(transform_, ch.sqrt_weight[k], f, rho[k], transformed_measured(transform_, f, meas[k]));
+            metric_residual(transform_, ch.sqrt_weight[k], f, rho_c[k], transformed_measured(transform_, f, meas[k]));
         sum += r * r;
       }
     }
