@@ -1,16 +1,23 @@
 #include "brdfkit/models/holzschuch_pacanowski.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "brdfkit/models/microfacet_model.h"
 #include "brdfkit/ndf/d_block.h"
 
 namespace brdfkit {
 
-void HolzschuchPacanowski::eval_batch(const double* p, int c, size_t n, const double* wi_x, const double* wi_y,
-                                      const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
-                                      double* out) {
-  const ExponentialPower<double> ndf(p + kNdfOffset);
+namespace {
+
+// eval_batch for the channels cs[0], …, cs[channels − 1], whose distribution parameters (σ, p) are
+// those of ps[0]: D, the G1 table's coordinates and G1 a block of pairs at a time, once for all of
+// them; each channel's ρ from them with eval_with, as eval_batch computes it for that channel alone.
+void batch_channels(const double* const* ps, const int* cs, int channels, size_t n, const double* wi_x,
+                    const double* wi_y, const double* wi_z, const double* wo_x, const double* wo_y,
+                    const double* wo_z, double* const* outs) {
+  using HP = HolzschuchPacanowski;
+  const ExponentialPower<double> ndf(ps[0] + HP::kNdfOffset);
   const ExponentialPowerG1Table& table = ExponentialPowerG1Table::instance();
   // Per pair k of a block: cosθh, cosθd, σ tanθ of wi and wo, then D and the table coordinates.
   alignas(64) double ch[kDBlock], cd[kDBlock], zi[kDBlock], zo[kDBlock], d[kDBlock], bi[kDBlock], bo[kDBlock];
@@ -22,8 +29,8 @@ void HolzschuchPacanowski::eval_batch(const double* p, int c, size_t n, const do
       const double len = std::sqrt(sx * sx + sy * sy + sz * sz);
       ch[k] = sz / len;
       cd[k] = 0.5 * len;
-      zi[k] = slope_scale(ndf.sigma, wi_z[j]);
-      zo[k] = slope_scale(ndf.sigma, wo_z[j]);
+      zi[k] = HP::slope_scale(ndf.sigma, wi_z[j]);
+      zo[k] = HP::slope_scale(ndf.sigma, wo_z[j]);
     }
     std::fill(ch + m, ch + kDBlock, 1.0);  // the padding: any values in the kernels' domains
     std::fill(zi + m, zi + kDBlock, 1.0);
@@ -35,14 +42,37 @@ void HolzschuchPacanowski::eval_batch(const double* p, int c, size_t n, const do
       const size_t j = start + k;
       const Vec3d wi(wi_x[j], wi_y[j], wi_z[j]), wo(wo_x[j], wo_y[j], wo_z[j]);
       if (!(wi.z() > 0 && wo.z() > 0)) {
-        out[j] = 0;
+        for (int c = 0; c < channels; ++c) outs[c][j] = 0;
         continue;
       }
       // ExponentialPowerG1Table::g1 with the block's coordinates (1 at the normal).
       const double gi = zi[k] > 0 ? table.g1_at(bi[k], ndf.p) : 1.0, go = zo[k] > 0 ? table.g1_at(bo[k], ndf.p) : 1.0;
-      out[j] = eval_with(p, c, wi, wo, cd[k], d[k], gi * go);  // seed 004 Eq. 7, 24
+      for (int c = 0; c < channels; ++c)
+        outs[c][j] = HP::eval_with(ps[c], cs[c], wi, wo, cd[k], d[k], gi * go);  // seed 004 Eq. 7, 24
     }
   }
+}
+
+}  // namespace
+
+void HolzschuchPacanowski::eval_batch(const double* p, int c, size_t n, const double* wi_x, const double* wi_y,
+                                      const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                                      double* out) {
+  batch_channels(&p, &c, 1, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, &out);
+}
+
+void HolzschuchPacanowski::eval_batch_rgb(const double* const p[3], size_t n, const double* wi_x,
+                                          const double* wi_y, const double* wi_z, const double* wo_x,
+                                          const double* wo_y, const double* wo_z, double* const out[3]) {
+  // σ and p, compared bitwise: their terms are shared only where every channel has the same bits.
+  const size_t bytes = sizeof(double) * size_t(kA - kNdfOffset);
+  if (std::memcmp(p[0] + kNdfOffset, p[1] + kNdfOffset, bytes) == 0 &&
+      std::memcmp(p[0] + kNdfOffset, p[2] + kNdfOffset, bytes) == 0) {
+    const int channels[3] = {0, 1, 2};
+    batch_channels(p, channels, 3, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out);
+    return;
+  }
+  for (int c = 0; c < 3; ++c) eval_batch(p[c], c, n, wi_x, wi_y, wi_z, wo_x, wo_y, wo_z, out[c]);
 }
 
 const Model* holzschuch_pacanowski_model() {

@@ -99,6 +99,11 @@ struct HolzschuchPacanowski {
   static void eval_batch(const double* p, int c, size_t n, const double* wi_x, const double* wi_y,
                          const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
                          double* out);
+  // eval_batch of the three channels (Model::eval_batch_rgb): D and G1 once for R, G and B where
+  // they share σ and p, each output equal to its channel's eval_batch to the bit.
+  static void eval_batch_rgb(const double* const p[3], size_t n, const double* wi_x, const double* wi_y,
+                             const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z,
+                             double* const out[3]);
 
   // ρ of Eq. 24 from D(θh), cosθd and G = G1(wi) G1(wo), for directions above the horizon.
   template <class T>

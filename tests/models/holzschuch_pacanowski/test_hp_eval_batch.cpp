@@ -2,7 +2,8 @@
 // Γ(1/p)) once per batch instead of once per pair — 15.2 s → 2.7 s user for one recovery fit
 // (perf: 65 % of the time was in Boost's tgamma) — and computes D and the G1 table's coordinate
 // with vector math; it must give eval's values within ndf/d_block.h's 1e-12 relative, since
-// tables are tabulated through eval and fitted through eval_batch.
+// tables are tabulated through eval and fitted through eval_batch. Its three-channel pass
+// (eval_batch_rgb: D and G1 once for R, G and B) must equal the channels' eval_batch to the bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,23 +18,35 @@
 namespace brdfkit {
 namespace {
 
-TEST(HpEvalBatch, EqualsEvalWithinVectorMathBound) {
-  const Model& m = model_by_name("holzschuch-pacanowski");
+// Pairs in both hemispheres (some below the horizon), as structure-of-arrays.
+struct Pairs {
+  std::vector<double> v[6];
+  SoaPairs soa() const { return {v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()}; }
+};
+
+Pairs random_pairs(size_t n) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const size_t n = 500;
-  std::vector<double> v[6];
-  for (auto& a : v) a.resize(n);
+  Pairs p;
+  for (auto& a : p.v) a.resize(n);
   for (size_t k = 0; k < n; ++k) {
     // Some pairs below the horizon (value 0) among the upper-hemisphere ones.
     const Vec3d wi = spherical_direction(1.7 * u(rng), 2 * kPi * u(rng));
     const Vec3d wo = spherical_direction(1.6 * u(rng), 2 * kPi * u(rng));
     for (int a = 0; a < 3; ++a) {
-      v[a][k] = wi[a];
-      v[3 + a][k] = wo[a];
+      p.v[a][k] = wi[a];
+      p.v[3 + a][k] = wo[a];
     }
   }
-  const SoaPairs d{v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(), v[5].data()};
+  return p;
+}
+
+TEST(HpEvalBatch, EqualsEvalWithinVectorMathBound) {
+  const Model& m = model_by_name("holzschuch-pacanowski");
+  const size_t n = 500;
+  const Pairs pairs = random_pairs(n);
+  const auto& v = pairs.v;
+  const SoaPairs d = pairs.soa();
   int compared = 0, below = 0;
   double worst = 0;
   for (const double p_shape : {0.15, 0.6, 1.0, 3.0}) {
@@ -56,6 +69,31 @@ TEST(HpEvalBatch, EqualsEvalWithinVectorMathBound) {
               worst);
   EXPECT_EQ(compared, 4 * 3 * 500);
   EXPECT_GT(below, 100);
+}
+
+TEST(HpEvalBatch, RgbPassEqualsChannelPasses) {
+  const Model& m = model_by_name("holzschuch-pacanowski");
+  const size_t n = 500;
+  const Pairs pairs = random_pairs(n);
+  ParamValues values = ParamValues::defaults(m.params());
+  const double kd[3] = {0.1, 0.3, 0.02}, ks[3] = {0.8, 0.2, 1.5}, kw[3] = {0.01, 0.2, 0.05}, f0[3] = {0.04, 0.5, 0.9};
+  const std::pair<const char*, const double*> colours[] = {{"kd", kd}, {"ks", ks}, {"kw", kw}, {"F0", f0}};
+  for (const auto& [name, x] : colours)
+    for (int c = 0; c < 3; ++c) values.values[size_t(c)][size_t(find_param(m.params(), name))] = x[c];
+  // Shared σ and p (one pass), then a σ of its own in blue (three passes).
+  for (const bool shared : {true, false}) {
+    if (!shared) values.values[2][size_t(find_param(m.params(), "sigma"))] *= 1.5;
+    std::vector<double> rgb[3], one(n);
+    for (auto& r : rgb) r.resize(n);
+    const double* const p[3] = {values.channel(0), values.channel(1), values.channel(2)};
+    double* const out[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
+    m.eval_batch_rgb(p, n, pairs.soa(), out);
+    for (int c = 0; c < 3; ++c) {
+      m.eval_batch(p[c], c, n, pairs.soa(), one.data());
+      for (size_t k = 0; k < n; ++k)
+        ASSERT_EQ(rgb[c][k], one[k]) << (shared ? "shared" : "per-channel") << " σ, channel " << c << " pair " << k;
+    }
+  }
 }
 
 }  // namespace
