@@ -1,8 +1,9 @@
 // Evaluation throughput of kd/π + Cook-Torrance for every distribution of the catalogue:
 // evaluations per second on one core, through the runtime Model::eval_batch_rgb that fitting uses
 // (fit/engine/projected_objective.cpp; ModelAdapter → the static type's structure-of-arrays loop,
-// one virtual call per sweep: three eval_batch calls for most models, one pass for He, whose three
-// channels share its shadowing and effective roughness) over the 1 458 000 direction pairs of a
+// one virtual call per sweep: one pass for the three channels where they share their costly terms,
+// as here (Cook-Torrance and Holzschuch-Pacanowski: D and G; He: its shadowing and effective
+// roughness), three eval_batch calls for the other models) over the 1 458 000 direction pairs of a
 // MERL grid (cell centres, DESIGN.md §2), three channels per sweep.
 // DESIGN.md §12's floor: 3.7 ms per sweep for GGX in double. Also the per-pair virtual
 // Model::eval for GGX, to show what the batch loop buys, and He one channel per call.
