@@ -3,9 +3,11 @@
 # fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
-# Measured (2 cores, idle): ngan only 0.48 s wall, 0.85 s CPU, 178 MB; every metric 0.76–0.85 s
-# wall, 1.4–1.6 s CPU, 178 MB. On a machine whose page faults cost ~7 µs (~42 k of them, the sys
-# time of 0.3 s); 0.21 s and 0.38 s CPU for ngan only where they cost ~2 µs. Targets: 0.15 s and 1 s.
+# Measured (2 cores, three runs): ngan only 0.19–0.23 s wall, 0.35–0.43 s CPU, 179 MB; every metric
+# 0.49–0.51 s wall, 0.95–0.98 s CPU. This machine's speed drifts by a third between hours: the same
+# binary takes 0.17 s one day and 0.27 s another, so compare builds side by side. The kernel (the
+# faults of ~42 k fresh pages, the file's copy) takes a fifth of the CPU time (perf). Targets: 0.15 s
+# and 1 s.
 # Reproduce with (warm build):
 #   bash bench/merl_fit_metrics.sh [OUT_DIR]        (BUILD_DIR= overrides)
 set -euo pipefail
