@@ -4,10 +4,10 @@
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
 # Measured (2 cores, three runs): ngan only 0.19–0.23 s wall, 0.35–0.43 s CPU, 179 MB; every metric
-# 0.49–0.51 s wall, 0.95–0.98 s CPU. This machine's speed drifts by a third between hours: the same
-# binary takes 0.17 s one day and 0.27 s another, so compare builds side by side. The kernel (the
-# faults of ~42 k fresh pages, the file's copy) takes a fifth of the CPU time (perf). Targets: 0.15 s
-# and 1 s.
+# 0.49–0.51 s wall, 0.95–0.98 s CPU. This machine's speed drifts by a third between days: the
+# same code took 0.17 s one day and 0.27 s (median of 15) another, so compare builds side by side.
+# The kernel (the faults of ~42 k fresh pages, the file's copy) takes a fifth of the CPU time
+# (perf). Targets: 0.15 s and 1 s.
 # Reproduce with (warm build):
 #   bash bench/merl_fit_metrics.sh [OUT_DIR]        (BUILD_DIR= overrides)
 set -euo pipefail

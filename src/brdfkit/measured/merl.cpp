@@ -193,24 +193,13 @@ struct Fd {
   }
 };
 
-// Reads exactly n bytes (read(2) may return less); returns how many were read.
-size_t read_fully(int fd, void* dst, size_t n) {
+// Reads exactly n bytes at file offset `at` (pread(2) may return less; it leaves the descriptor's
+// offset alone, so pieces can be read in parallel); returns how many were read.
+size_t pread_fully(int fd, void* dst, size_t n, off_t at) {
   auto* p = static_cast<char*>(dst);
   size_t done = 0;
   while (done < n) {
-    const ssize_t got = ::read(fd, p + done, n - done);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break;
-    done += size_t(got);
-  }
-  return done;
-}
-
-// read_fully at file offset `at` (pread(2): the descriptor's offset is not shared between pieces).
-size_t pread_fully(int fd, char* dst, size_t n, off_t at) {
-  size_t done = 0;
-  while (done < n) {
-    const ssize_t got = ::pread(fd, dst + done, n - done, at + off_t(done));
+    const ssize_t got = ::pread(fd, p + done, n - done, at + off_t(done));
     if (got < 0 && errno == EINTR) continue;
     if (got <= 0) break;
     done += size_t(got);
@@ -282,7 +271,7 @@ Table read(const std::filesystem::path& file) {
     throw InputError(where, fmt::format("truncated: {} bytes, shorter than the 12-byte MERL header", size));
 
   std::int32_t dims[3];
-  if (read_fully(f.fd, dims, sizeof dims) != sizeof dims)
+  if (pread_fully(f.fd, dims, sizeof dims, 0) != sizeof dims)
     throw InputError(where, fmt::format("read error in the header: {}", std::strerror(errno)));
   if (dims[0] != kResThetaH || dims[1] != kResThetaD || dims[2] != kResPhiD)
     throw InputError(where, fmt::format("header dimensions ({}, {}, {}), expected (90, 90, 180) for (θh, θd, φd)",
