@@ -113,4 +113,14 @@ BRDFKIT_VECTOR_KERNEL void exponential_power_d_block(double norm, double sigma, 
   }
 }
 
+BRDFKIT_VECTOR_KERNEL void exponential_power_p22_block(double norm, double sigma, double p, const double* __restrict x,
+                                                       double* __restrict out) {
+  for (std::size_t k = 0; k < kP22Block; ++k) {
+    const double y = x[k] / (sigma * sigma);
+    // y^p as exp(p ln y), as gtr_p22_block: libmvec's pow costs more than its exp and log together.
+    const double e = y > 0.0 ? exp(p * log(y > 0.0 ? y : 1.0)) : 0.0;
+    out[k] = norm * exp(-e);  // seed 004 Eq. 19
+  }
+}
+
 }  // namespace brdfkit

@@ -37,5 +37,8 @@ void beckmann_d_block(double alpha, const double* c, double* out);
 void exponential_d_block(double alpha, const double* c, double* out);
 // Exponential power (ndf/exponential_power.h): norm · exp(−(tan²θ/σ²)^p)/c⁴; 0 at c ≤ 0.
 void exponential_power_d_block(double norm, double sigma, double p, const double* c, double* out);
+// The exponential power's P22 at kP22Block slopes x: norm · exp(−(x/σ²)^p), as
+// ExponentialPower::P22 (norm at x ≤ 0).
+void exponential_power_p22_block(double norm, double sigma, double p, const double* x, double* out);
 
 }  // namespace brdfkit

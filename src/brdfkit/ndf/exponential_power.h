@@ -52,6 +52,12 @@ template <class T> struct ExponentialPower {
   {
     exponential_power_d_block(norm, sigma, p, c, out);
   }
+  // P22 at the kP22Block slopes x[0 … kP22Block), for the Smith integral's nodes.
+  void P22_block(const double* x, double* out) const
+    requires std::is_same_v<T, double>
+  {
+    exponential_power_p22_block(norm, sigma, p, x, out);
+  }
   T unit(const T& cos_theta) const { return D(cos_theta) / norm; }
 
   // With y = (x/σ²)^p the slope CDF is the regularized lower gamma P(1/p, y), so

@@ -1,5 +1,6 @@
 #include "brdfkit/shadowing/smith_integrand_block.h"
 
+#include <algorithm>
 #include <cstddef>
 
 #include "brdfkit/core/vector_kernel.h"
@@ -21,8 +22,15 @@ BRDFKIT_VECTOR_KERNEL void factors(double inv_t2, const double* __restrict w, do
 
 }  // namespace
 
-void integrand_factors_block(double inv_t2, const double* w, double* x, double* factor) {
-  factors(inv_t2, w, x, factor);
+void integrand_factors(double inv_t2, const double* w, std::size_t n, double* x, double* factor) {
+  double wb[kP22Block], xb[kP22Block], fb[kP22Block];
+  for (std::size_t b = 0; b < n; b += kP22Block) {
+    const std::size_t m = std::min(kP22Block, n - b);
+    std::fill(std::copy_n(w + b, m, wb), wb + kP22Block, 0.0);
+    factors(inv_t2, wb, xb, fb);
+    std::copy_n(xb, m, x + b);
+    std::copy_n(fb, m, factor + b);
+  }
 }
 
 }  // namespace brdfkit::smith_detail
