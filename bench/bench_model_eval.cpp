@@ -2,9 +2,10 @@
 // evaluations per second on one core, through the runtime Model::eval_batch_rgb that fitting uses
 // (fit/engine/projected_objective.cpp; ModelAdapter → the static type's structure-of-arrays loop,
 // one virtual call per sweep: one pass for the three channels where they share their costly terms,
-// as here (Cook-Torrance and Holzschuch-Pacanowski: D and G; He: its shadowing and effective
-// roughness), three eval_batch calls for the other models) over the 1 458 000 direction pairs of a
-// MERL grid (cell centres, DESIGN.md §2), three channels per sweep.
+// as here (Cook-Torrance and Holzschuch-Pacanowski: D and G; He: its shadowing, effective
+// roughness and, with η and k shared as here, its Fresnel factor), three eval_batch calls for the
+// other models) over the 1 458 000 direction pairs of a MERL grid (cell centres, DESIGN.md §2),
+// three channels per sweep.
 // DESIGN.md §12's floor: 3.7 ms per sweep for GGX in double. Also the per-pair virtual
 // Model::eval for GGX, to show what the batch loop buys, and He one channel per call.
 // `--stride=k` evaluates every k-th pair only (for distributions whose Smith term is numeric,

@@ -39,12 +39,16 @@ namespace {
   k_factor = oblique ? tan_theta * erfc_a : 0.0;                  // He 1991 Eq. 82–83
 }
 
-// x = sqrt(W0(f0²)). Below f0 = 1e-100, f0² would leave the normal doubles; there
-// x = f0 (1 − f0²/2 + …) is f0 to the last bit.
+// Below it x = sqrt(W0(f0²)) = f0 (1 − f0²/2 + …) (W0(z) = z − z² + …) is f0 to the last bit:
+// f0²/2 < 2⁻⁵⁴. (Most pairs of a smooth surface lie there: K = tanθ erfc(τ/(2σ0 tanθ)) is tiny
+// away from grazing angles.)
+constexpr double kZ0Linear = 1e-8;
+
+// x = sqrt(W0(f0²)).
 [[gnu::always_inline]] inline double z0_ratio_lane(double f0) {
-  const double f = f0 > 1e-100 ? f0 : 1.0;
+  const double f = f0 > kZ0Linear ? f0 : 1.0;
   const double root = std::sqrt(lambert_w0_lane(f * f));
-  return f0 > 1e-100 ? root : (f0 > 0 ? f0 : 0.0);
+  return f0 > kZ0Linear ? root : (f0 > 0 ? f0 : 0.0);
 }
 
 }  // namespace
@@ -56,30 +60,86 @@ BRDFKIT_VECTOR_KERNEL void he_z0_ratio_lanes(const double* __restrict f0, double
 BRDFKIT_VECTOR_KERNEL void he_pair_shape_lanes(double sigma0, double tau, const double* __restrict cos_i,
                                                const double* __restrict cos_o, double* __restrict shadow,
                                                double* __restrict sigma) {
+  double f0[kHePairLanes], x[kHePairLanes];
   for (std::size_t k = 0; k < kHePairLanes; ++k) {
     double s_i, s_o, k_i, k_o;
     slope_lane(cos_i[k], sigma0, tau, s_i, k_i);
     slope_lane(cos_o[k], sigma0, tau, s_o, k_o);
-    shadow[k] = s_i * s_o;                                         // He 1991 Eq. 23
-    const double x = z0_ratio_lane((k_i + k_o) / std::sqrt(8 * kPi));  // He 1991 Eq. 81 divided by σ0
-    sigma[k] = sigma0 / std::sqrt(1 + x * x);                       // He 1991 Eq. 80
+    shadow[k] = s_i * s_o;                         // He 1991 Eq. 23
+    f0[k] = (k_i + k_o) / std::sqrt(8 * kPi);      // He 1991 Eq. 81 divided by σ0
+  }
+  // Lambert's W only where a lane needs it: z0_ratio_lane's value either way.
+  bool linear = true;
+  for (std::size_t k = 0; k < kHePairLanes; ++k) linear &= f0[k] <= kZ0Linear;
+  if (linear) {
+    for (std::size_t k = 0; k < kHePairLanes; ++k) x[k] = f0[k] > 0 ? f0[k] : 0.0;
+  } else {
+    for (std::size_t k = 0; k < kHePairLanes; ++k) x[k] = z0_ratio_lane(f0[k]);
+  }
+  for (std::size_t k = 0; k < kHePairLanes; ++k) sigma[k] = sigma0 / std::sqrt(1 + x[k] * x[k]);  // He 1991 Eq. 80
+}
+
+BRDFKIT_VECTOR_KERNEL void he_pair_block(double tau, const bool* __restrict above, std::size_t m,
+                                         const double* __restrict wi_x, const double* __restrict wi_y,
+                                         const double* __restrict wi_z, const double* __restrict wo_x,
+                                         const double* __restrict wo_y, const double* __restrict wo_z,
+                                         HeBlockPairs& __restrict pairs) {
+  for (std::size_t k = 0; k < kHeBlock; ++k) {
+    const bool used = k < m && above[k];
+    const std::size_t j = used ? k : 0;  // an unused lane reads a pair that exists
+    const double vx = wi_x[j] + wo_x[j], vy = wi_y[j] + wo_y[j];
+    const double vz = used ? wi_z[j] + wo_z[j] : 2.0;
+    const double vxy2 = used ? vx * vx + vy * vy : 0.0;  // HeTorrance::pair_terms
+    const double vv = vxy2 + vz * vz;
+    const double sigma = used ? pairs.sigma[k] : 1.0;
+    pairs.vv[k] = vv;
+    pairs.vz[k] = vz;
+    pairs.vxy2[k] = vxy2;
+    pairs.sigma[k] = sigma;
+    pairs.geometry[k] = (vv / vz) * (vv / vz);  // He 1991 Eq. 76 (unpolarized)
+    pairs.shadow[k] = used ? pairs.shadow[k] : 1.0;
+    pairs.den[k] = used ? kPi * wi_z[j] * wo_z[j] : kPi;
+    pairs.ratio[k] = HeTorrance::series_ratio(tau, vxy2, sigma, vz);
   }
 }
 
-BRDFKIT_VECTOR_KERNEL void he_channel_block(const double* p, int c, const HeBlockPairs& __restrict pairs,
-                                            HeBlockChannel& __restrict out) {
-  // A copy, so that no store to `out` could change a parameter inside the loop.
-  double q[HeTorrance::kK + 1];
-  std::copy(p, p + HeTorrance::kK + 1, q);
+namespace {
+
+// he_channel_block's loop, F G S computed (front_of) or read from `front`: two loops, so that
+// each is a plain vector loop.
+template <bool kComputeFront>
+[[gnu::always_inline]] inline void channel_lanes(const double* q, int c, const HeBlockPairs& __restrict pairs,
+                                                 const double* __restrict front, HeBlockChannel& __restrict out) {
   for (std::size_t k = 0; k < kHeBlock; ++k) {
+    const double f = kComputeFront ? HeTorrance::front_of(q, pairs.vv[k], pairs.geometry[k], pairs.shadow[k]) : front[k];
     const HeTorrance::Unsummed<double> u =
-        HeTorrance::unsummed_of(q, c, pairs.vv[k], pairs.vz[k], pairs.vxy2[k], pairs.sigma[k], pairs.geometry[k],
-                                pairs.shadow[k], pairs.den[k]);
+        HeTorrance::unsummed_with(q, c, f, pairs.vz[k], pairs.vxy2[k], pairs.sigma[k], pairs.den[k]);
     out.g[k] = u.g;
     out.c[k] = u.c;
     out.front[k] = u.front;
   }
+}
+
+}  // namespace
+
+BRDFKIT_VECTOR_KERNEL void he_channel_block(const double* p, int c, const HeBlockPairs& __restrict pairs,
+                                            const double* front, HeBlockChannel& __restrict out) {
+  // A copy, so that no store to `out` could change a parameter inside the loop.
+  double q[HeTorrance::kK + 1];
+  std::copy(p, p + HeTorrance::kK + 1, q);
+  if (front) channel_lanes<false>(q, c, pairs, front, out);
+  else channel_lanes<true>(q, c, pairs, nullptr, out);
   out.scale = HeTorrance::series_scale(p, c);
+}
+
+BRDFKIT_VECTOR_KERNEL void he_rho_block(const double* p, const HeBlockChannel& __restrict channel,
+                                        const HeBlockPairs& __restrict pairs, const bool* __restrict above,
+                                        std::size_t m, double* __restrict out) {
+  const double kd_pi = p[HeTorrance::kKd] * kInvPi, ks = p[HeTorrance::kKs];
+  for (std::size_t k = 0; k < m; ++k) {
+    const HeTorrance::Unsummed<double> u{channel.g[k], channel.c[k], channel.front[k], channel.scale, pairs.den[k]};
+    out[k] = above[k] ? kd_pi + ks * u.of(channel.series[k]) : 0.0;
+  }
 }
 
 BRDFKIT_VECTOR_KERNEL void he_fresnel_ratio_block(const double* p, const double* p0, const double* __restrict at_p0,

@@ -40,9 +40,22 @@ void he_pair_shape_lanes(double sigma0, double tau, const double* cos_i, const d
 // on vector exp and log1p.
 void he_z0_ratio_lanes(const double* f0, double* x);
 
+// The pairs' numbers of HeTorrance::pair_terms, den (as HeTorrance::unsummed) and c/g
+// (HeTorrance::series_ratio) at the pairs k < m of a block with above[k], from their directions and
+// the shadow and sigma already in `pairs`: the same arithmetic to the bit. Every other lane takes
+// the numbers of wi = wo = ẑ with σ = 1 (a series the table covers: g = 4k²); its value is not used.
+void he_pair_block(double tau, const bool* above, std::size_t m, const double* wi_x, const double* wi_y,
+                   const double* wi_z, const double* wo_x, const double* wo_y, const double* wo_z, HeBlockPairs& pairs);
+
 // HeTorrance::unsummed_of at every pair of the block, for channel c with parameters p: the same
-// arithmetic to the bit (no libm call: square roots and divisions are exact in any width).
-void he_channel_block(const double* p, int c, const HeBlockPairs& pairs, HeBlockChannel& out);
+// arithmetic to the bit (no libm call: square roots and divisions are exact in any width). With
+// `front` given (an earlier channel's, whose η and k are p's), its F G S is taken from there.
+void he_channel_block(const double* p, int c, const HeBlockPairs& pairs, const double* front, HeBlockChannel& out);
+
+// ρ = kd/π + ks · Unsummed::of(series) at the pairs k < m of a block with above[k], 0 at the
+// others (HeTorrance::eval): plain arithmetic, the same to the bit.
+void he_rho_block(const double* p, const HeBlockChannel& channel, const HeBlockPairs& pairs, const bool* above,
+                  std::size_t m, double* out);
 
 // HeTorrance::eval_batch_from's ratio at n pairs: out[k] = d + (at_p0[k] − d) F_p / F_p0 with
 // d = kd/π, and f0[k] = F_p0, at every pair, the caller choosing where the ratio serves. The same

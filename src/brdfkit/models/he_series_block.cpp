@@ -37,4 +37,23 @@ BRDFKIT_VECTOR_KERNEL void HeSeriesTable::interpolate_block(const Rows& __restri
   }
 }
 
+BRDFKIT_VECTOR_KERNEL bool HeSeriesTable::lane_sources(const double* __restrict g, const double* __restrict c,
+                                                       unsigned char* __restrict source) {
+  unsigned char any = 0;
+  for (std::size_t k = 0; k < kBlock; ++k) {
+    const bool main = covers_main(g[k], c[k]), table = covers(g[k], c[k]);
+    source[k] = main ? kMain : (table ? kLow : kSummed);
+    any |= source[k];
+  }
+  return any != 0;
+}
+
+BRDFKIT_VECTOR_KERNEL void HeSeriesTable::low_block(const double* __restrict g, const double* __restrict c,
+                                                   double* __restrict s) const {
+  const double* __restrict nodes = low_;
+  const double x0 = low_x0_;
+  const int nx = low_nx_, ny = low_ny_;
+  for (std::size_t k = 0; k < kLowLanes; ++k) s[k] = low_at(nodes, nx, ny, x0, g[k], c[k]);
+}
+
 }  // namespace brdfkit

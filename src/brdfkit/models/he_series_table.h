@@ -25,7 +25,16 @@
 // surface: in cc_ibiza_sunset's fit (τ/2σ ≈ 10) 27 % of look-ups have c/g > 100, and 1 % > 1000; in
 // Cornell acryl_blue's (τ/2σ ≈ 80) 69 % have 1000 < c/g ≤ 10⁵ with g ≥ 0.5, the far run's domain:
 // summed, the series took 62 % of that fit's profile (1.6 s of CPU; 0.34 s with the far run).
-// Outside the domain (smaller g: few terms, cheap; larger g or c/g) it sums the series.
+// Below g = 0.5 a third run, the low one, covers 10⁻³ ≤ g < 0.5 with c ≤ 10⁵ g: r = log S − log g + g
+// (log Σ g^{m−1}/(m!·m) e^{−c/m}) at x = log g, steps 0.03, and y = log(1 + c), steps 0.01, so
+// S = g e^{r − g}. Its rows follow c, not c/g: at small g the series' terms take turns at the lead
+// as c grows (term m over m + 1 near c ≈ m² log(m/g), over a width ≈ m² in c), a feature whose width
+// is a fixed fraction of c, and in (log g, c/g) each such turn would sweep across the columns, which
+// the near run's interpolant missed by 1.6e-6. At the default He parameters 6–10 % of a MERL grid's
+// look-ups have g < 0.5; summed, they took a quarter of its evaluation time
+// (bench/bench_model_eval.cpp). Worst relative error 2.0e-7, at g ≈ 0.0011, c ≈ 17
+// (tests/models/he/test_he_series_table.cpp).
+// Outside the domain (g < 10⁻³: few terms, cheap; larger g or c/g) it sums the series.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -50,17 +59,23 @@ class HeSeriesTable {
   // then the far rows r(q0 + j·step q), j < far_rows. The build runs compute_nodes once
   // (cmake/generators/he_series_table.cpp) and compiles its output in, so that a process does not
   // sum 390 k series (~0.7 s of CPU) before its first look-up.
+  // The low run's nodes follow, column by column: r(j·step y), j < low_rows, in low_columns
+  // columns from log kGLow − step x.
   struct Nodes {
     int columns, rows, far_rows;
     std::vector<double> r;
+    int low_columns, low_rows;
+    std::vector<double> low;
   };
   static Nodes compute_nodes();  // he_series_table_nodes.cpp
   std::span<const double> nodes() const { return {r_, std::size_t(nx_) * std::size_t(stride_)}; }
+  std::span<const double> low_nodes() const { return {low_, std::size_t(low_nx_) * std::size_t(low_ny_)}; }
 
   // S(g, c): from the table inside its domain, else the series summed to kSummedTolerance.
   double operator()(double g, double c) const;
-  // Whether (g, c) is read from the table (inline: block() asks it of every lane).
-  bool covers(double g, double c) const { return g >= kGMin && g <= kGMax && c >= 0 && c <= kRatioMax * g; }
+  // Whether (g, c) is read from the table, from any of its runs (& rather than &&: no branches,
+  // for lane_sources' vector loop).
+  static bool covers(double g, double c) { return (g >= kGLow) & (g <= kGMax) & (c >= 0) & (c <= kRatioMax * g); }
 
   // The look-ups a batch makes at once.
   static constexpr std::size_t kBlock = 64;
@@ -87,7 +102,7 @@ class HeSeriesTable {
   void block_at(const Rows& rows, const double* g, double* s) const;
 
  private:
-  static constexpr double kGMin = 0.5, kGMax = 1e4;
+  static constexpr double kGLow = 1e-3, kGMin = 0.5, kGMax = 1e4;  // the low run below kGMin
   static constexpr double kYMax = 1000, kRatioMax = 1e5;  // c/g ≤ kYMax near, ≤ kRatioMax far
   static constexpr double kStepX = 0.03, kStepY = 0.01, kStepQ = 0.01;
   // Nodes per unit of x, y and q.
@@ -96,6 +111,9 @@ class HeSeriesTable {
   HeSeriesTable();
   static double first_x() { return std::log(kGMin) - kStepX; }  // x0: see x0_
   static double first_q() { return std::log(kYMax) - kStepQ; }  // q0: one below the far run's domain
+  static double first_low_x() { return std::log(kGLow) - kStepX; }
+  // Whether the near or far run covers (g, c).
+  static bool covers_main(double g, double c) { return (g >= kGMin) & (g <= kGMax) & (c >= 0) & (c <= kRatioMax * g); }
 
   // The row side of a look-up at c/g = ratio: the node below (from the column's first), the
   // position t ∈ [0, 1] past it, and y of S = e^{r − y}/g. A ratio outside [0, kRatioMax] (a NaN
@@ -147,6 +165,27 @@ class HeSeriesTable {
   // block_at's interpolation at every lane, each g first clamped into the domain (he_series_block.cpp).
   void interpolate_block(const Rows& rows, const double* g, double* s) const;
 
+  // S from the low run at (g, c) inside it: the cubic through the 4 × 4 nodes around
+  // (log g, log(1 + c)), as interpolate. Static and always inlined for low_block's vector loop.
+  [[gnu::always_inline]] static double low_at(const double* nodes, int nx, int ny, double x0, double g, double c) {
+    const double x = log(g), fy = log1p(c) * kPerStepY;
+    const int j = std::min(std::max(int(fy), 1), ny - 3);
+    double wy[4];
+    lagrange4(fy - j, wy);
+    return exp(interpolate(nodes, nx, ny, (x - x0) * kPerStepX, j, wy, 1) - g + x);
+  }
+  // low_at at the kLowLanes lanes (g[k], c[k]), all inside the low run (he_series_block.cpp): a
+  // block's few low-run look-ups (near grazing directions) go through it eight at a time.
+  static constexpr std::size_t kLowLanes = 8;
+  void low_block(const double* g, const double* c, double* s) const;
+  // s[k] at the lanes the main runs do not cover: the low run's where it covers them, else the
+  // series summed.
+  void fill_uncovered(const double* g, const double* c, double* s) const;
+  // Each lane's source, on vector lanes (he_series_block.cpp): kMain (the near or far run), kLow or
+  // kSummed; true where some lane is not kMain.
+  enum : unsigned char { kMain = 0, kLow = 1, kSummed = 2 };
+  static bool lane_sources(const double* g, const double* c, unsigned char* source);
+
   // x = log g of the first column: one below g = kGMin, so that a look-up inside the domain has
   // its 4 × 4 nodes; q = log(c/g) of the first far row.
   double x0_ = 0, q0_ = 0;
@@ -155,6 +194,10 @@ class HeSeriesTable {
   // Column by column: a batch's pairs mostly share g (a metric's grid varies Δφ fastest, which
   // leaves the cosines unchanged), so a block's look-ups walk along the rows of 4 columns.
   const double* r_ = nullptr;
+  // The low run: x = log g of its first column, its columns and rows, its nodes column by column.
+  double low_x0_ = 0;
+  int low_nx_ = 0, low_ny_ = 0;
+  const double* low_ = nullptr;
 };
 
 }  // namespace brdfkit

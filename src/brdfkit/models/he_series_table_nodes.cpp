@@ -19,7 +19,8 @@ constexpr double kNodeTolerance = 1e-10;
 
 // One column below g = kGMin, one far row below its domain and two nodes beyond the top of each
 // axis, so that a look-up inside the domain has its 4 × 4 nodes; at y = 0 (the first row) a
-// look-up in the first cell takes the cubic through the rows 0 … 3.
+// look-up in the first cell takes the cubic through the rows 0 … 3. The low run the same way from
+// g = kGLow to kGMin, c to kRatioMax · kGMin.
 HeSeriesTable::Nodes HeSeriesTable::compute_nodes() {
   const double x0 = first_x(), q0 = first_q();
   Nodes n{int(std::ceil((std::log(kGMax) - x0) / kStepX)) + 3, int(std::ceil(std::log1p(kYMax) / kStepY)) + 3,
@@ -37,6 +38,17 @@ HeSeriesTable::Nodes HeSeriesTable::compute_nodes() {
       }
       for (int j = 0; j < n.far_rows; ++j)
         column[n.rows + j] = he_log_series(g, g * std::exp(q0 + j * kStepQ), kNodeTolerance) + std::log(g);
+    });
+  });
+  n.low_columns = int(std::ceil((std::log(kGMin) - first_low_x()) / kStepX)) + 3;
+  n.low_rows = int(std::ceil(std::log1p(kRatioMax * kGMin) / kStepY)) + 3;
+  n.low.resize(std::size_t(n.low_columns) * std::size_t(n.low_rows));
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(0, n.low_columns, [&](int i) {
+      const double g = std::exp(first_low_x() + i * kStepX);
+      double* column = n.low.data() + std::size_t(i) * std::size_t(n.low_rows);
+      for (int j = 0; j < n.low_rows; ++j)
+        column[j] = he_log_series(g, std::expm1(j * kStepY), kNodeTolerance) - std::log(g) + g;
     });
   });
   return n;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -81,19 +82,6 @@ class PairShapes {
   double last_shadow_ = 0, last_sigma_ = 0;
 };
 
-// A lane of a block that holds no pair above the horizon: the numbers of wi = wo = ẑ with σ = 1,
-// whose series the table covers (g = 4k² for every channel's k). Its value is not used.
-void set_unused(HeBlockPairs& b, std::size_t k) {
-  b.vv[k] = 4;
-  b.vz[k] = 2;
-  b.vxy2[k] = 0;
-  b.sigma[k] = 1;
-  b.geometry[k] = 4;
-  b.shadow[k] = 1;
-  b.den[k] = kPi;
-  b.ratio[k] = 0;
-}
-
 // ρ of `count` channels (p[i]: the parameters of channel channel[i], all with the σ0 and τ of
 // p[0]) at n pairs, block by block: the shape terms pair by pair, once for every channel
 // (PairShapes), then each channel's Eq. 75 but the series (he_channel_block) and the series
@@ -105,39 +93,26 @@ void eval_channels(const double* const* p, const int* channel, int count, std::s
   const HeSeriesTable& table = HeSeriesTable::get();
   PairShapes shapes(p[0]);
   const double tau = p[0][HeTorrance::kTau];
-  HeBlockPairs pairs;
+  HeBlockPairs pairs{};  // lanes no pair fills are read (and their values dropped) by he_pair_block
   HeSeriesTable::Rows rows;
   HeBlockChannel lanes[3];
   bool above[kHeBlock];
+  // Channels whose η and k are channel 0's to the bit share its F G S.
+  bool same_fresnel[3] = {true, false, false};
+  for (int i = 1; i < count; ++i)
+    same_fresnel[i] = std::memcmp(p[i] + HeTorrance::kEta, p[0] + HeTorrance::kEta, 2 * sizeof(double)) == 0;
   for (std::size_t start = 0; start < n; start += kHeBlock) {
     const std::size_t m = std::min(kHeBlock, n - start);
     for (std::size_t k = 0; k < kHeBlock; ++k) above[k] = k < m && wi_z[start + k] > 0 && wo_z[start + k] > 0;
     shapes.fill(above, wi_z + start, wo_z + start, m, pairs.shadow, pairs.sigma);
-    for (std::size_t k = 0; k < kHeBlock; ++k) {
-      const std::size_t j = start + k;
-      if (!above[k]) {
-        set_unused(pairs, k);
-        continue;
-      }
-      const Vec3d wi(wi_x[j], wi_y[j], wi_z[j]), wo(wo_x[j], wo_y[j], wo_z[j]);
-      const HeTorrance::PairTerms<double> t = HeTorrance::pair_terms(wi, wo, pairs.shadow[k], pairs.sigma[k]);
-      pairs.vv[k] = t.vv;
-      pairs.vz[k] = t.v.z();
-      pairs.vxy2[k] = t.vxy2;
-      pairs.geometry[k] = t.geometry;
-      pairs.den[k] = kPi * wi.z() * wo.z();  // as HeTorrance::unsummed
-      pairs.ratio[k] = HeTorrance::series_ratio(tau, t.vxy2, t.sigma, t.v.z());
-    }
+    he_pair_block(tau, above, m, wi_x + start, wi_y + start, wi_z + start, wo_x + start, wo_y + start, wo_z + start,
+                  pairs);
     table.rows(pairs.ratio, rows);
     for (int i = 0; i < count; ++i) {
       HeBlockChannel& l = lanes[i];
-      he_channel_block(p[i], channel[i], pairs, l);
+      he_channel_block(p[i], channel[i], pairs, i > 0 && same_fresnel[i] ? lanes[0].front : nullptr, l);
       table.block_at(rows, l.g, l.series);
-      const double kd_pi = p[i][HeTorrance::kKd] * kInvPi, ks = p[i][HeTorrance::kKs];
-      for (std::size_t k = 0; k < m; ++k) {
-        const HeTorrance::Unsummed<double> u{l.g[k], l.c[k], l.front[k], l.scale, pairs.den[k]};
-        out[i][start + k] = above[k] ? kd_pi + ks * u.of(l.series[k]) : 0.0;
-      }
+      he_rho_block(p[i], l, pairs, above, m, out[i] + start);
     }
   }
 }

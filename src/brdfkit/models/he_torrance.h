@@ -151,17 +151,28 @@ struct HeTorrance {
   template <class T>
   static Unsummed<T> unsummed_of(const T* p, int c, const T& vv, const T& vz, const T& vxy2, const T& sigma,
                                  const T& geometry, const T& shadow, const T& den) {
+    return unsummed_with(p, c, front_of(p, vv, geometry, shadow), vz, vxy2, sigma, den);
+  }
+  // Eq. 75's F G S: the Fresnel factor at the bisector angle, cos = |v|/2. The channels share it
+  // where they share η and k (he_batch_block.h).
+  template <class T> static T front_of(const T* p, const T& vv, const T& geometry, const T& shadow) {
     using std::sqrt;
+    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));
+    return fresnel * geometry * shadow;  // Eq. 75
+  }
+  // unsummed_of with its front_of given.
+  template <class T>
+  static Unsummed<T> unsummed_with(const T* p, int c, const T& front, const T& vz, const T& vxy2, const T& sigma,
+                                   const T& den) {
     const T& tau = p[kTau];
     const double lambda = wavelength_um(c);
     const double k = 2 * kPi / lambda;
-    const T fresnel = ConductorFresnel<T>(p + kEta).eval(T(0.5) * sqrt(vv));  // bisector angle
     const T kg = T(k) * sigma * vz;
     Unsummed<T> u;
     u.g = kg * kg;                                              // Eq. 79
     u.c = T(0.25 * k * k) * tau * tau * vxy2;                   // τ² v_xy²/4, v_xy = k |v_xy|
     u.scale = series_scale(p, c);
-    u.front = fresnel * geometry * shadow;                      // Eq. 75
+    u.front = front;
     u.den = den;
     return u;
   }

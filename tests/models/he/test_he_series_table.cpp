@@ -22,10 +22,11 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
   const HeSeriesTable& table = HeSeriesTable::get();
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
-  // The worst relative difference and where, in the near rows (c/g ≤ 1000) and the far ones.
+  // The worst relative difference and where, in the near rows (c/g ≤ 1000), the far ones and the
+  // low run (g < 0.5).
   struct Worst {
     double rel = 0, g = 0, c = 0;
-  } worst[2];
+  } worst[3];
   int underflows = 0;
   auto check = [&](double g, double c) {
     ASSERT_TRUE(table.covers(g, c)) << g << " " << c;
@@ -35,7 +36,7 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
       return;
     }
     const double rel = std::abs(got / want - 1);
-    Worst& w = worst[c > 1000 * g];
+    Worst& w = worst[g < 0.5 ? 2 : c > 1000 * g];
     if (rel > w.rel) w = {rel, g, c};
   };
   for (int k = 0; k < 100000; ++k) {  // the near rows
@@ -46,14 +47,20 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
     const double g = 0.5 * std::pow(1e4 / 0.5, u(rng)), y = 1000 * std::pow(100.0, u(rng));
     check(g, g * y);
   }
-  for (double g : {0.5, 0.5001, 2.0, 99.5, 3200.0, 1e4})  // the edges of the domain
+  for (int k = 0; k < 100000; ++k) {  // the low run
+    const double g = 1e-3 * std::pow(0.5 / 1e-3, u(rng)), c = std::expm1(u(rng) * std::log1p(1e5 * g));
+    check(std::min(g, 0.4999999), c);
+  }
+  for (double g : {1e-3, 0.0010001, 0.01, 0.2, 0.4999, 0.5, 0.5001, 2.0, 99.5, 3200.0, 1e4})  // the edges
     for (double y : {0.0, 1e-9, 0.37, 99.9, 299.9, 999.9, 1000.0, 1000.0001, 1e4, 99999.0, 1e5}) check(g, g * y);
-  for (int far = 0; far < 2; ++far)
-    std::printf("He series table, %s rows: worst relative difference to the series %.3g at g = %.6g, c/g = %.6g\n",
-                far ? "far" : "near", worst[far].rel, worst[far].g, worst[far].c / worst[far].g);
+  const char* run[3] = {"near", "far", "low"};
+  for (int r = 0; r < 3; ++r)
+    std::printf("He series table, %s rows: worst relative difference to the series %.3g at g = %.6g, c = %.6g\n",
+                run[r], worst[r].rel, worst[r].g, worst[r].c);
   std::printf("He series table: %d points underflow\n", underflows);
   EXPECT_LT(worst[0].rel, 5e-7);
   EXPECT_LT(worst[1].rel, 5e-7);
+  EXPECT_LT(worst[2].rel, 5e-7);
 }
 
 // The build sums the nodes once and compiles them in (cmake/generators/he_series_table.cpp): they
@@ -64,22 +71,26 @@ TEST(HeSeriesTable, AgreesWithTheSeriesOverItsDomain) {
 // at five such nodes, 1.1e-13 in the near rows; 0 otherwise).
 TEST(HeSeriesTable, CompiledInNodesAreTheComputedNodes) {
   const HeSeriesTable::Nodes want = HeSeriesTable::compute_nodes();
-  const std::span<const double> got = HeSeriesTable::get().nodes();
+  const std::span<const double> got = HeSeriesTable::get().nodes(), got_low = HeSeriesTable::get().low_nodes();
   ASSERT_EQ(got.size(), want.r.size());
   ASSERT_EQ(got.size(), size_t(want.columns) * size_t(want.rows + want.far_rows));
+  ASSERT_EQ(got_low.size(), want.low.size());
+  ASSERT_EQ(got_low.size(), size_t(want.low_columns) * size_t(want.low_rows));
   double worst = 0;
   for (std::size_t k = 0; k < got.size(); ++k)
     worst = std::max(worst, std::abs(got[k] - want.r[k]) / std::max(1.0, std::abs(want.r[k])));
+  for (std::size_t k = 0; k < got_low.size(); ++k)
+    worst = std::max(worst, std::abs(got_low[k] - want.low[k]) / std::max(1.0, std::abs(want.low[k])));
   std::printf("He series table: %zu compiled-in nodes, worst difference to the computed nodes %.3g (relative to "
               "max(1, |r|))\n",
-              got.size(), worst);
+              got.size() + got_low.size(), worst);
   EXPECT_LE(worst, 1e-12);
 }
 
 TEST(HeSeriesTable, OutsideItsDomainSumsTheSeries) {
   const HeSeriesTable& table = HeSeriesTable::get();
   for (const auto& [g, c] :
-       {std::pair{0.1, 3.0}, std::pair{0.49, 0.0}, std::pair{2e4, 10.0}, std::pair{50.0, 5.00001e6}}) {
+       {std::pair{5e-4, 3.0}, std::pair{9.99e-4, 0.0}, std::pair{0.3, 3.1e4}, std::pair{2e4, 10.0}, std::pair{50.0, 5.00001e6}}) {
     EXPECT_FALSE(table.covers(g, c)) << g << " " << c;
     EXPECT_EQ(table(g, c), he_series(g, c, HeSeriesTable::kSummedTolerance)) << g << " " << c;
   }
@@ -95,8 +106,8 @@ TEST(HeSeriesTable, BlockAgreesWithTheScalarLookUpInEveryLane) {
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<double> g, c;
-  for (int k = 0; k < 20000; ++k) {  // g from 0.1 to 2·10⁴ and c/g to 3·10⁵: inside and outside
-    const double gk = 0.1 * std::pow(2e5, u(rng));
+  for (int k = 0; k < 20000; ++k) {  // g from 10⁻⁴ to 2·10⁴ and c/g to 3·10⁵: inside and outside
+    const double gk = 1e-4 * std::pow(2e8, u(rng));
     g.push_back(gk);
     c.push_back(gk * std::expm1(u(rng) * std::log1p(3e5)));
   }
@@ -148,7 +159,7 @@ TEST(HeSeriesTable, RowsSharedAtOneRatioServeEveryChannelsG) {
     double ratio[kB], g[3][kB], s[kB];
     for (std::size_t k = 0; k < kB; ++k) {
       ratio[k] = std::expm1(u(rng) * std::log1p(3e5));  // c/g to 3·10⁵: near and far rows, and outside
-      g[0][k] = 0.1 * std::pow(2e5, u(rng));
+      g[0][k] = 1e-4 * std::pow(2e8, u(rng));
       for (int ch = 1; ch < 3; ++ch) {  // g ∝ k² = (2π/λ)²
         const double lambda_ratio = kChannelWavelengthUm[0] / kChannelWavelengthUm[ch];
         g[ch][k] = g[0][k] * lambda_ratio * lambda_ratio;
@@ -184,7 +195,7 @@ TEST(HeSeriesTable, OutsideItsDomainJumpsTooLittleForForwardDifferences) {
   const HeSeriesTable& table = HeSeriesTable::get();
   double worst = 0;
   for (const auto& [g0, c] :
-       {std::pair{0.3, 2.0}, std::pair{0.2, 50.0}, std::pair{0.32, 400.0}, std::pair{1.2e4, 10.0}}) {
+       {std::pair{8e-4, 2.0}, std::pair{4e-4, 40.0}, std::pair{1e-4, 10.0}, std::pair{1.2e4, 10.0}}) {
     ASSERT_FALSE(table.covers(g0, c));
     auto terms = [c = c](double g) {
       HeSeriesStats stats;
