@@ -39,9 +39,9 @@ namespace {
   k_factor = oblique ? tan_theta * erfc_a : 0.0;                  // He 1991 Eq. 82–83
 }
 
-// Below it x = sqrt(W0(f0²)) = f0 (1 − f0²/2 + …) (W0(z) = z − z² + …) is f0 to the last bit:
-// f0²/2 < 2⁻⁵⁴. (Most pairs of a smooth surface lie there: K = tanθ erfc(τ/(2σ0 tanθ)) is tiny
-// away from grazing angles.)
+// The f0 below which x = sqrt(W0(f0²)) = f0 (1 − f0²/2 + …) (W0(z) = z − z² + …) is f0 to the
+// last bit: f0²/2 < 2⁻⁵⁴. Most pairs of a smooth surface lie there, K = tanθ erfc(τ/(2σ0 tanθ))
+// being tiny away from grazing angles.
 constexpr double kZ0Linear = 1e-8;
 
 // x = sqrt(W0(f0²)).

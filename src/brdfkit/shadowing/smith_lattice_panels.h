@@ -4,9 +4,9 @@
 // a lattice. smith_lambda_integral lays its panels on w = i·kPanelWidth whatever tanθ is, so the
 // edges and the rule's points of every whole panel are the same in every integral of a process:
 // their s², exp and atan are computed once (LatticeFactors), and an integral pays for P22 at its
-// points, a product and the sum. (A Smith table node is 161 such integrals; in a Cornell file's
-// GTR fit, the exp and atan of s were about a third of a node's cost.) The values are those of the
-// integrand computed afresh to the bit.
+// points, a product and the sum. (A Smith table node is 161 such integrals; a Cornell file's GTR
+// fit, krylon_blue, took 0.77 s of CPU before, 0.51–0.57 s with this, active_pieces' split without
+// logs and the per-thread scratch.) The values are those of the integrand computed afresh, to the bit.
 #include <cstddef>
 #include <vector>
 
