@@ -232,6 +232,13 @@ struct CookTorrance {
   static void eval_batch(const double* p, int, std::size_t n, const double* wix, const double* wiy,
                          const double* wiz, const double* wox, const double* woy, const double* woz, double* out) {
     const Lobe lobes[1] = {lobe(p, p + fresnel_offset())};
+    if (lobes[0].ks == 0.0) {
+      // The diffuse term alone: variable projection's diffuse basis (fit/engine/projected_objective.h)
+      // is this model at ks = 0, filled once per fit level, and needs no D or G. Equal to eval_at
+      // wherever the specular term is finite (ks · x = ±0 then).
+      for (std::size_t k = 0; k < n; ++k) out[k] = (wiz[k] > 0.0) & (woz[k] > 0.0) ? lobes[0].kd_pi : 0.0;
+      return;
+    }
     batch_loop<1>(p, lobes, n, wix, wiy, wiz, wox, woy, woz, out, nullptr, nullptr);
   }
   // eval_batch of the three channels (Model::eval_batch_rgb): one pass computing D, G and the

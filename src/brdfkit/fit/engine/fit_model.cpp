@@ -54,7 +54,7 @@ class Engine {
   void set_stride(size_t s) {
     if (s == ctx_.stride && !ctx_.blocks.empty()) return;
     ctx_.stride = s;
-    ctx_.blocks = sample_blocks(metric_, s);
+    ctx_.blocks = sample_blocks(metric_, s, project_ ? BlockWeights::Squared : BlockWeights::Residual);
     objective_->reset(true);
   }
   void set_base(const ParamValues& pv) {

@@ -10,6 +10,7 @@
 #include "brdfkit/core/ordered_reduce.h"
 #include "brdfkit/fit/engine/box_least_squares.h"
 #include "brdfkit/fit/engine/finite_difference.h"
+#include "brdfkit/fit/engine/weighted_dots.h"
 
 namespace brdfkit::fit {
 
@@ -17,16 +18,27 @@ namespace {
 
 using Eigen::Index;
 
-// Σ w² x y over a block, in four interleaved partial sums added in a fixed order: one running sum
-// waits for each addition to finish, four keep the adder busy, and the order is the same on every
-// machine.
+// Inner products of one block gathered, then computed in one weighted_dots sweep into their slots.
+class DotBatch {
+ public:
+  void add(const double* x, const double* y, double* slot) {
+    terms_.push_back({x, y});
+    slots_.push_back(slot);
+  }
+  void run(const SampleBlock& b) {
+    values_.resize(terms_.size());
+    weighted_dots(b.n, b.w2.data(), terms_, values_.data());
+    for (size_t t = 0; t < slots_.size(); ++t) *slots_[t] = values_[t];
+  }
+
+ private:
+  std::vector<DotTerm> terms_;
+  std::vector<double*> slots_;
+  std::vector<double> values_;
+};
+
 double weighted_dot(const SampleBlock& b, const double* x, const double* y) {
-  double s[4] = {0, 0, 0, 0};
-  size_t k = 0;
-  for (; k + 4 <= b.n; k += 4)
-    for (size_t l = 0; l < 4; ++l) s[l] += b.w2[k + l] * x[k + l] * y[k + l];
-  for (; k < b.n; ++k) s[0] += b.w2[k] * x[k] * y[k];
-  return (s[0] + s[1]) + (s[2] + s[3]);
+  return fit::weighted_dot(b.n, b.w2.data(), x, y);
 }
 
 }  // namespace
@@ -134,16 +146,18 @@ void ProjectedObjective::gram_partials(size_t i, const ParamValues& pv, double* 
     v.resize(b.n);
     return v.data();
   });
+  DotBatch dots;
   for (size_t q = 0; q < Q; ++q) {
     double* G = acc + q * (K * K + 3 * K);
     double* y = G + K * K;  // y[c·K + j] = <b_j, m_c>
     for (size_t j = 0; j < K; ++j) {
       const double* bj = basis(i, int(q), j);
-      for (size_t l = j; l < K; ++l) G[j * K + l] = weighted_dot(b, bj, basis(i, int(q), l));
+      for (size_t l = j; l < K; ++l) dots.add(bj, basis(i, int(q), l), &G[j * K + l]);
       for (size_t c = 0; c < 3; ++c)
-        if (Q == 1 || c == q) y[c * K + j] = weighted_dot(b, bj, b.m[c]);
+        if (Q == 1 || c == q) dots.add(bj, b.m[c], &y[c * K + j]);
     }
   }
+  dots.run(b);
 }
 
 // The bases at x and their Gram matrices, kept for the last point only: Ceres asks for derivatives
@@ -317,6 +331,7 @@ void ProjectedObjective::residual_partials(size_t i, const std::array<Eigen::Vec
 void ProjectedObjective::extended_partials(size_t i, const Extended& e, const Derivatives& dv, double* acc) const {
   const size_t K = bases_.size(), nv = ctx_.vars.size();
   const SampleBlock& b = ctx_.blocks[i];
+  DotBatch dots;
   for (size_t q = 0; q < classes(); ++q) {
     const size_t L = e.L[q];
     std::vector<const double*> col(L);
@@ -325,12 +340,13 @@ void ProjectedObjective::extended_partials(size_t i, const Extended& e, const De
     double* G = acc + 1 + nv + e.offset[q];
     double* y = G + L * L;
     for (size_t a = 0; a < L; ++a) {
-      for (size_t bb = std::max(a, K); bb < L; ++bb) G[a * L + bb] = weighted_dot(b, col[a], col[bb]);
+      for (size_t bb = std::max(a, K); bb < L; ++bb) dots.add(col[a], col[bb], &G[a * L + bb]);
       if (a < K) continue;
       for (size_t c = 0; c < 3; ++c)
-        if (classes_ == 1 || c == q) y[c * L + a] = weighted_dot(b, col[a], b.m[c]);
+        if (classes_ == 1 || c == q) dots.add(col[a], b.m[c], &y[c * L + a]);
     }
   }
+  dots.run(b);
 }
 
 // Channel c's Gauss-Newton terms (Golub-Pereyra): J_v = d_v β + B ∂β_v, from the Gram blocks.

@@ -38,8 +38,10 @@ double block_measure(double h, double d, double p) { return 2 * kPi * h * 2 * d 
 
 // merl::cell_directions of every cell, to the bit, with the sines and cosines computed once per
 // θh row and per (θd, φd) instead of four times per cell: from_half_diff's arithmetic (core/
-// half_diff.cpp: d = spherical_direction(θd, φd), wi = d rotated about y by θh then about z by
-// φh = 0 (Rodrigues, rotate_about), wo = reflect(wi, h)) with the same factors.
+// half_diff.cpp) with the same factors. d = spherical_direction(θd, φd); wi = rotate_about(d, y, θh)
+// written out for the y axis (axis·v = v_y, axis×v = (v_z, 0, −v_x), the zero terms dropped: adding
+// ±0 changes no value); the rotation about z by φh that follows is the identity (merl::cell_centre
+// puts every cell at φh = 0); wo = reflect(wi, h).
 class CellDirections {
  public:
   CellDirections() : d_(size_t(merl::kResThetaD) * merl::kResPhiD) {
@@ -52,27 +54,23 @@ class CellDirections {
 
   struct Row {
     Vec3d h;
-    double cos_h, sin_h, cos_phi_h, sin_phi_h;
+    double cos_h, sin_h;
   };
   static Row row(int theta_h) {
     const HalfDiff hd = merl::cell_centre({theta_h, 0, 0});
-    return {spherical_direction(hd.theta_h, hd.phi_h), std::cos(hd.theta_h), std::sin(hd.theta_h),
-            std::cos(hd.phi_h), std::sin(hd.phi_h)};
+    return {spherical_direction(hd.theta_h, hd.phi_h), std::cos(hd.theta_h), std::sin(hd.theta_h)};
   }
 
   // False when either direction is at or below the horizon (as merl::cell_directions).
   bool operator()(const Row& r, int theta_d, int phi_d, Vec3d& wi, Vec3d& wo) const {
     const Vec3d& d = d_[size_t(theta_d) * merl::kResPhiD + size_t(phi_d)];
-    wi = rotate(rotate(d, Vec3d::UnitY(), r.cos_h, r.sin_h), Vec3d::UnitZ(), r.cos_phi_h, r.sin_phi_h);
+    const double c = r.cos_h, s = r.sin_h;
+    wi = Vec3d(d.x() * c + d.z() * s, d.y() * c + d.y() * (1.0 - c), d.z() * c - d.x() * s);
     wo = reflect<double>(wi, r.h);
     return wi.z() > 0 && wo.z() > 0;
   }
 
  private:
-  // rotate_about (core/half_diff.h) with its cosine and sine given.
-  static Vec3d rotate(const Vec3d& v, const Vec3d& axis, double c, double s) {
-    return v * c + axis * (axis.dot(v) * (1.0 - c)) + axis.cross(v) * s;
-  }
   std::vector<Vec3d> d_;
 };
 
