@@ -2,7 +2,8 @@
 // For the translation units that hold vector kernels, and only for them (ndf/d_block.cpp,
 // shadowing/exponential_power_g1_block.cpp, shadowing/smith_g1_row_block.cpp,
 // shadowing/smith_integrand_block.cpp, measured/merl_row_cells.cpp, models/he_series_block.cpp,
-// models/he_series_ratios.cpp, models/he_batch_block.cpp): never include this from a header.
+// models/he_series_ratios.cpp, models/he_batch_block.cpp, fit/engine/weighted_dots.cpp): never
+// include this from a header.
 //
 // glibc's libmvec holds vector variants of acos, atan, atan2, erfc, exp, log, log1p and pow
 // (_ZGVbN2v_exp for SSE2, _ZGVdN4v_exp for AVX2, _ZGVeN8v_exp for AVX-512, within 4 ulp of the

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <tbb/blocked_range.h>
@@ -243,6 +244,25 @@ size_t first_corrupt_value(const double* v) {
   return kNone;
 }
 
+// One pass over the cells: each cell's validity (Table's mask) into `valid`, and whether every
+// value is a measurement (the least index of one that is not is then first_corrupt_value's to find).
+bool mask_measured(const double* v, std::uint8_t* valid) {
+  const double *r = v, *g = r + kCellCount, *b = g + kCellCount;
+  const double lr = kMaxMeasuredValue / kScale[0], lg = kMaxMeasuredValue / kScale[1],
+               lb = kMaxMeasuredValue / kScale[2];
+  return tbb::parallel_reduce(
+      all_cells(), true,
+      [&](const tbb::blocked_range<size_t>& range, bool ok) {
+        bool all = true;
+        for (size_t k = range.begin(); k < range.end(); ++k) {
+          valid[k] = (r[k] >= 0) & (g[k] >= 0) & (b[k] >= 0);
+          all &= is_measurement(r[k], lr) & is_measurement(g[k], lg) & is_measurement(b[k], lb);
+        }
+        return ok && all;
+      },
+      std::logical_and<>());
+}
+
 [[noreturn]] void refuse_value(const std::string& where, double x, size_t k) {
   const Cell c = cell_at(k % kCellCount);
   const std::string what = std::isnan(x)   ? "NaN"
@@ -293,8 +313,12 @@ Table read(const std::filesystem::path& file) {
   if (got != want)
     throw InputError(where, fmt::format("truncated: read {} of {} value bytes", got.load(), want));
 
-  if (const size_t k = first_corrupt_value(raw.get()); k != 3 * kCellCount) refuse_value(where, raw[k], k);
-  Table table(std::move(raw));
+  auto valid = std::make_unique_for_overwrite<std::uint8_t[]>(kCellCount);
+  if (!mask_measured(raw.get(), valid.get())) {
+    const size_t k = first_corrupt_value(raw.get());
+    refuse_value(where, raw[k], k);
+  }
+  Table table(std::move(raw), std::move(valid));
   if (table.valid_count() == 0)
     throw InputError(where, "no measured cell: every cell has a negative (not measured) value");
   return table;

@@ -95,6 +95,11 @@ class Table {
   std::optional<Rgb> lookup_trilinear(const Vec3d& wi, const Vec3d& wo) const;
 
  private:
+  // read() computes the mask in the pass that checks the values.
+  friend Table read(const std::filesystem::path& file);
+  Table(std::unique_ptr<double[]> raw, std::unique_ptr<std::uint8_t[]> valid)
+      : raw_(std::move(raw)), valid_(std::move(valid)) {}
+
   std::unique_ptr<double[]> raw_;
   std::unique_ptr<std::uint8_t[]> valid_;
 };

@@ -15,9 +15,9 @@ struct SampleBlock {
   SoaPairs d{};
   const double* m[3] = {};     // measured ρ per channel
   const double* f = nullptr;   // the factor of ρ: residual.h's f
+  // The objective's weight (BlockWeights): one of w2 and rw is filled, the other left empty.
   std::vector<double> w2;      // (scale · √w · f)² · stride: the identity residual's weight
   std::vector<double> rw;      // scale · √w · √stride: residual.h's rw
-  // Each objective reads one of the two (BlockWeights); the other stays empty.
   std::vector<double> own;     // gathered arrays (stride > 1)
 };
 

@@ -11,7 +11,7 @@ namespace {
 // clone has (two SSE2 halves, one AVX2 register). Read from any double (aligned to 8, may alias).
 typedef double Lanes __attribute__((vector_size(4 * sizeof(double))));
 typedef double LanesAt __attribute__((vector_size(4 * sizeof(double)), aligned(8), may_alias));
-#define load(p) (*reinterpret_cast<const LanesAt*>(p))
+#define LANES_AT(p) (*reinterpret_cast<const LanesAt*>(p))
 
 double finish(const Lanes& s, std::size_t k, std::size_t n, const double* w2, const double* x, const double* y) {
   double s0 = s[0];
@@ -26,11 +26,11 @@ BRDFKIT_VECTOR_KERNEL void sweep4(std::size_t n, const double* __restrict w2, co
   Lanes s0 = {}, s1 = {}, s2 = {}, s3 = {};
   std::size_t k = 0;
   for (; k + 4 <= n; k += 4) {
-    const Lanes w = load(w2 + k);
-    s0 += w * load(x0 + k) * load(y0 + k);
-    s1 += w * load(x1 + k) * load(y1 + k);
-    s2 += w * load(x2 + k) * load(y2 + k);
-    s3 += w * load(x3 + k) * load(y3 + k);
+    const Lanes w = LANES_AT(w2 + k);
+    s0 += w * LANES_AT(x0 + k) * LANES_AT(y0 + k);
+    s1 += w * LANES_AT(x1 + k) * LANES_AT(y1 + k);
+    s2 += w * LANES_AT(x2 + k) * LANES_AT(y2 + k);
+    s3 += w * LANES_AT(x3 + k) * LANES_AT(y3 + k);
   }
   out[0] = finish(s0, k, n, w2, x0, y0);
   out[1] = finish(s1, k, n, w2, x1, y1);
@@ -41,9 +41,11 @@ BRDFKIT_VECTOR_KERNEL void sweep4(std::size_t n, const double* __restrict w2, co
 BRDFKIT_VECTOR_KERNEL double sweep1(std::size_t n, const double* __restrict w2, const double* x, const double* y) {
   Lanes s = {};
   std::size_t k = 0;
-  for (; k + 4 <= n; k += 4) s += load(w2 + k) * load(x + k) * load(y + k);
+  for (; k + 4 <= n; k += 4) s += LANES_AT(w2 + k) * LANES_AT(x + k) * LANES_AT(y + k);
   return finish(s, k, n, w2, x, y);
 }
+
+#undef LANES_AT
 
 }  // namespace
 
