@@ -3,11 +3,11 @@
 # fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
-# Measured (2 cores, three runs): ngan only 0.19–0.23 s wall, 0.35–0.43 s CPU, 179 MB; every metric
-# 0.49–0.51 s wall, 0.95–0.98 s CPU. This machine's speed drifts by a third between days: the
-# same code took 0.17 s one day and 0.27 s (median of 15) another, so compare builds side by side.
-# The kernel (the faults of ~42 k fresh pages, the file's copy) takes a fifth of the CPU time
-# (perf). Targets: 0.15 s and 1 s.
+# Measured (2 cores, five runs): ngan only 0.20–0.23 s wall, 0.35–0.42 s CPU, 171 MB; every metric
+# 0.36–0.51 s wall. This machine's speed drifts by a third between days and within an hour (one
+# binary took 0.19 s and 0.25 s an hour apart), so compare builds side by side, runs interleaved. Profile (perf):
+# the kernel (the faults of ~40 k fresh pages, the file's copy) a quarter of the CPU time, the
+# SHA-256 of the file 6 %, GGX's paired evaluations 16 %. Targets: 0.15 s and 1 s.
 # Reproduce with (warm build):
 #   bash bench/merl_fit_metrics.sh [OUT_DIR]        (BUILD_DIR= overrides)
 set -euo pipefail
