@@ -6,6 +6,7 @@
 //     where they read G1 from a row (models/cook_torrance.h);
 //   - Cook-Torrance's eval_batch_rgb (one pass for R, G and B where they share the distribution's
 //     parameters) equals the three channels' eval_batch to the bit;
+//   - Cook-Torrance's eval_batch at ks = 0 (the diffuse basis, without D or G) equals eval;
 //   - the cell domain's directions (fit/metric/metric_cells.cpp, sines and cosines once per axis) equal
 //     merl::cell_directions of every cell;
 //   - a fit through the paired pass gives the same parameters, to the bit, as one through two
@@ -94,6 +95,34 @@ TEST(SpeedPath, PairEvaluationEqualsTwoBatchCalls) {
   std::printf("eval_batch_pair: %d (model, parameter, channel) cases bit-equal; %d Cook-Torrance F0 parameters\n",
               checked, custom);
   EXPECT_GE(custom, 11);  // every registered Cook-Torrance model has a Schlick F0
+}
+
+// Variable projection's diffuse basis is the model at ks = 0, which eval_batch computes without D
+// or G (models/cook_torrance.h): for every registered Cook-Torrance model, kd/π above the horizon
+// and 0 below it, to the bit, and eval's value at every pair.
+TEST(SpeedPath, CookTorranceAtZeroKsIsTheDiffuseTermAlone) {
+  Pairs pairs = random_pairs(300, 5);
+  pairs.add(Vec3d(0.6, 0.0, -0.8), Vec3d(0.0, 0.0, 1.0));  // wi below the horizon
+  pairs.add(Vec3d(0.0, 0.0, 1.0), Vec3d(0.0, 0.6, -0.8));  // wo below
+  int models = 0;
+  for (const Model* m : all_models()) {
+    if (!m->name().starts_with("cook-torrance")) continue;
+    const ParamTable& t = m->params();
+    ParamValues v = ParamValues::defaults(t);
+    v.set(t, "kd", 0.3);
+    v.set(t, "ks", 0.0);
+    std::vector<double> got(pairs.size());
+    m->eval_batch(v.channel(1), 1, pairs.size(), pairs.soa(), got.data());
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const Vec3d wi(pairs.v[0][k], pairs.v[1][k], pairs.v[2][k]), wo(pairs.v[3][k], pairs.v[4][k], pairs.v[5][k]);
+      const double want = wi.z() > 0 && wo.z() > 0 ? 0.3 * kInvPi : 0.0;
+      ASSERT_TRUE(same_bits(got[k], want)) << m->name() << " pair " << k << ": " << got[k];
+      ASSERT_TRUE(same_bits(got[k], m->eval(v.channel(1), 1, wi, wo))) << m->name() << " pair " << k;
+    }
+    ++models;
+  }
+  std::printf("%d Cook-Torrance models at ks = 0: kd/pi above the horizon, 0 below, eval's value\n", models);
+  EXPECT_GE(models, 11);
 }
 
 // Every registered Cook-Torrance model's batch loop (paired or not) against eval<double> at random
