@@ -97,6 +97,9 @@ namespace {
 // them, and each pass is memory-bound, so two cores halve it.
 constexpr size_t kCellsPerTask = size_t(1) << 16;
 tbb::blocked_range<size_t> all_cells() { return {0, kCellCount, kCellsPerTask}; }
+
+// A cell is measured when all three of its stored values are ≥ 0 (DESIGN.md §2).
+std::uint8_t measured_cell(double r, double g, double b) { return (r >= 0) & (g >= 0) & (b >= 0); }
 }  // namespace
 
 Table::Table(std::unique_ptr<double[]> raw)
@@ -104,7 +107,7 @@ Table::Table(std::unique_ptr<double[]> raw)
   const double *r = raw_.get(), *g = r + kCellCount, *b = g + kCellCount;
   std::uint8_t* v = valid_.get();
   tbb::parallel_for(all_cells(), [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t k = range.begin(); k < range.end(); ++k) v[k] = (r[k] >= 0) & (g[k] >= 0) & (b[k] >= 0);
+    for (size_t k = range.begin(); k < range.end(); ++k) v[k] = measured_cell(r[k], g[k], b[k]);
   });
 }
 
@@ -125,7 +128,7 @@ void Table::set_raw(size_t offset, double r, double g, double b) {
   raw_[offset] = r;
   raw_[kCellCount + offset] = g;
   raw_[2 * kCellCount + offset] = b;
-  valid_[offset] = (r >= 0) & (g >= 0) & (b >= 0);
+  valid_[offset] = measured_cell(r, g, b);
 }
 
 size_t Table::valid_count() const {
@@ -211,13 +214,17 @@ constexpr size_t kReadPiece = size_t(4) << 20;  // bytes per pread task
 
 const char* const kChannelName[3] = {"R", "G", "B"};
 
+// The limit on a raw value of channel c: kMaxMeasuredValue once scaled.
+constexpr double kRawLimit[3] = {kMaxMeasuredValue / kScale[0], kMaxMeasuredValue / kScale[1],
+                                 kMaxMeasuredValue / kScale[2]};
+
 // MERL files are refused, not patched, for a value that cannot be a measurement: non-finite, or
 // above kMaxMeasuredValue once scaled, where means and albedos overflow. The format has its own
 // "not measured" mark (a negative value); anything else is corruption, and dropping those cells
 // would pass a damaged file off as a sparse measurement.
-// (−∞ < raw ≤ limit is false for NaN: the same test without isfinite's branch.)
-bool is_measurement(double raw, double limit) {
-  return (raw > -std::numeric_limits<double>::infinity()) & (raw <= limit);
+// (−∞ < raw ≤ kRawLimit[c] is false for NaN: the same test without isfinite's branch.)
+bool is_measurement(double raw, size_t c) {
+  return (raw > -std::numeric_limits<double>::infinity()) & (raw <= kRawLimit[c]);
 }
 
 // Index of the first value (channel blocks R, G, B) that is no measurement; 3·kCellCount if none.
@@ -226,16 +233,15 @@ bool is_measurement(double raw, double limit) {
 size_t first_corrupt_value(const double* v) {
   constexpr size_t kNone = 3 * kCellCount;
   for (size_t c = 0; c < 3; ++c) {
-    const double limit = kMaxMeasuredValue / kScale[c];
     const double* block = v + c * kCellCount;
     const size_t first = tbb::parallel_reduce(
         all_cells(), kNone,
         [&](const tbb::blocked_range<size_t>& range, size_t found) {
           bool all = true;
-          for (size_t k = range.begin(); k < range.end(); ++k) all &= is_measurement(block[k], limit);
+          for (size_t k = range.begin(); k < range.end(); ++k) all &= is_measurement(block[k], c);
           if (all) return found;
           const double* bad = std::find_if_not(block + range.begin(), block + range.end(),
-                                               [&](double x) { return is_measurement(x, limit); });
+                                               [&](double x) { return is_measurement(x, c); });
           return std::min(found, c * kCellCount + size_t(bad - block));
         },
         [](size_t a, size_t b) { return std::min(a, b); });
@@ -248,15 +254,13 @@ size_t first_corrupt_value(const double* v) {
 // value is a measurement (the least index of one that is not is then first_corrupt_value's to find).
 bool mask_measured(const double* v, std::uint8_t* valid) {
   const double *r = v, *g = r + kCellCount, *b = g + kCellCount;
-  const double lr = kMaxMeasuredValue / kScale[0], lg = kMaxMeasuredValue / kScale[1],
-               lb = kMaxMeasuredValue / kScale[2];
   return tbb::parallel_reduce(
       all_cells(), true,
       [&](const tbb::blocked_range<size_t>& range, bool ok) {
         bool all = true;
         for (size_t k = range.begin(); k < range.end(); ++k) {
-          valid[k] = (r[k] >= 0) & (g[k] >= 0) & (b[k] >= 0);
-          all &= is_measurement(r[k], lr) & is_measurement(g[k], lg) & is_measurement(b[k], lb);
+          valid[k] = measured_cell(r[k], g[k], b[k]);
+          all &= is_measurement(r[k], 0) & is_measurement(g[k], 1) & is_measurement(b[k], 2);
         }
         return ok && all;
       },
