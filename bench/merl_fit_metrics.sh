@@ -3,9 +3,10 @@
 # fitted with `brdfkit fit` as a user runs it, reporting the fitting metric only and
 # then every metric (the default). Prints wall and CPU time and peak RSS of each whole process, and
 # the fitted alpha against the truth. Measure on an idle machine (the load average is printed).
-# Measured (2 cores, five runs): ngan only 0.20–0.23 s wall, 0.35–0.42 s CPU, 171 MB; every metric
-# 0.36–0.51 s wall. This machine's speed drifts by a third between days and within an hour (one
-# binary took 0.19 s and 0.25 s an hour apart), so compare builds side by side, runs interleaved. Profile (perf):
+# Measured (2 cores, five runs each, interleaved with the build before its last changes): ngan only
+# 0.13–0.15 s wall, 0.25–0.28 s CPU, 171 MB (that build 0.16–0.20 s); every metric 0.27–0.31 s. An
+# hour earlier the same two builds took 0.20–0.23 s and 0.21–0.28 s: this machine's speed drifts by
+# a third within an hour, so compare builds side by side, runs interleaved. Profile (perf):
 # the kernel (the faults of ~40 k fresh pages, the file's copy) a quarter of the CPU time, the
 # SHA-256 of the file 6 %, GGX's paired evaluations 16 %. Targets: 0.15 s and 1 s.
 # Reproduce with (warm build):
